@@ -1,0 +1,14 @@
+package org.armgals.active;
+
+/**
+ * An event could not be queued: the receiver's bounded buffer is full and its policy is {@link
+ * OverflowPolicy#reject()}, or {@link OverflowPolicy#block} ran out of time.
+ */
+public final class BufferFullException extends ActiveException {
+  private static final long serialVersionUID = 1L;
+
+  /** The buffer of {@code object}, of {@code capacity} events, is full. */
+  public BufferFullException(Address object, int capacity, String detail) {
+    super("buffer of " + object + " is full (capacity " + capacity + "): " + detail);
+  }
+}

@@ -1,0 +1,701 @@
+package org.armgals.active;
+
+import static java.util.Objects.requireNonNull;
+
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import org.jspecify.annotations.Nullable;
+
+/**
+ * An active object: its servant, its bounded buffer, its scheduling state. The one class behind
+ * {@link ActiveObject} and the local {@link ActiveRef}.
+ *
+ * <p><b>Buffer.</b> Producers append with one atomic exchange on {@link #tail} (a Vyukov
+ * multi-producer single-consumer linked queue whose nodes are the envelopes themselves); the
+ * object's activation is the single consumer and owns {@link #head} and the private list of
+ * deferred events, those it found not processable. {@link #size} counts both and is the capacity
+ * check. An object whose policy is drop-oldest uses a {@link LockedBuffer} instead, since a
+ * producer must then remove the oldest event.
+ *
+ * <p><b>Scheduling.</b> {@link #state} holds {@link #SCHEDULED} while the object is in its
+ * runtime's run queue or being run, so at most one thread consumes at a time; {@link #STOPPED} once
+ * stopped. A producer that finds an asynchronous object idle schedules it. An activation processes
+ * up to {@link #BATCH} events, then goes back to the run queue or, with nothing processable left,
+ * idles (re-checking the buffer after clearing the flag so no wake-up is lost). A synchronous
+ * object is scheduled only by its clock, once per instant.
+ */
+final class Core<S> implements ActiveObject<S> {
+  static final int SCHEDULED = 1;
+  static final int STOPPED = 2;
+  static final int BATCH = 256;
+
+  private static final VarHandle TAIL;
+  private static final VarHandle SIZE;
+  private static final VarHandle STATE;
+  private static final ThreadLocal<@Nullable Core<?>> CURRENT = new ThreadLocal<>();
+
+  static {
+    try {
+      MethodHandles.Lookup l = MethodHandles.lookup();
+      TAIL = l.findVarHandle(Core.class, "tail", Envelope.class);
+      SIZE = l.findVarHandle(Core.class, "size", int.class);
+      STATE = l.findVarHandle(Core.class, "state", int.class);
+    } catch (ReflectiveOperationException e) {
+      throw new ExceptionInInitializerError(e);
+    }
+  }
+
+  final RuntimeImpl runtime;
+  final long id;
+  private final S servant;
+  private final ObjectConfig config;
+  private final @Nullable LockedBuffer locked;
+
+  // producers
+  @SuppressWarnings("unused") // accessed through TAIL
+  private volatile Envelope tail;
+
+  private volatile int size;
+  private volatile int state;
+
+  // consumer only
+  private Envelope head;
+  private @Nullable Envelope deferredHead;
+  private @Nullable Envelope deferredTail;
+  private int deferredCount;
+  private boolean dirty;
+
+  /** Written by this object's own thread only: numbers what it sends. */
+  private long sendSeq;
+
+  /** The future this object's thread waits on, for wait-for cycle detection. */
+  volatile @Nullable ValueFuture<?> waitingFor;
+
+  /** The thread running an activation, for a cancelling shutdown. */
+  volatile @Nullable Thread runner;
+
+  /** Synchronous mode: the events waiting at the last release, and the instant to run. */
+  private int releasedSize;
+
+  private long pendingInstant;
+  private @Nullable CountDownLatch instantDone;
+  private @Nullable Address address;
+
+  Core(RuntimeImpl runtime, long id, S servant, ObjectConfig config) {
+    this.runtime = runtime;
+    this.id = id;
+    this.servant = servant;
+    this.config = config;
+    this.locked =
+        config.overflow() instanceof OverflowPolicy.DropOldest ? new LockedBuffer() : null;
+    Envelope stub = new Requests.Action<S>(s -> {}, null);
+    this.head = stub;
+    this.tail = stub;
+  }
+
+  /** The instant a synchronous object is running or last ran; 0 before its first. */
+  long currentInstant() {
+    return pendingInstant;
+  }
+
+  static @Nullable Core<?> current() {
+    return CURRENT.get();
+  }
+
+  S servant() {
+    return servant;
+  }
+
+  // ---------------------------------------------------------------- ActiveObject / ActiveRef
+
+  @Override
+  public Address address() {
+    Address a = address;
+    if (a == null) {
+      a = new Address(runtime.name(), id);
+      address = a;
+    }
+    return a;
+  }
+
+  @Override
+  public Mode mode() {
+    return config.mode();
+  }
+
+  @Override
+  public ObjectConfig config() {
+    return config;
+  }
+
+  @Override
+  public int queueDepth() {
+    LockedBuffer lb = locked;
+    return lb != null ? lb.size() : size;
+  }
+
+  @Override
+  public boolean isStopped() {
+    return (state & STOPPED) != 0;
+  }
+
+  @Override
+  public void send(Event event) {
+    requireNonNull(event, "event");
+    if (event instanceof SynchronizedMethodRequest<?, ?>) {
+      post((Envelope) event);
+    } else if (event instanceof Envelope e && !(event instanceof Requests.FutureReply)) {
+      post(e);
+    } else {
+      if (!(event instanceof Callable<?, ?>) && !address().equals(event.destination())) {
+        throw new IllegalArgumentException(
+            "event " + event + " is addressed to " + event.destination() + ", not " + address());
+      }
+      post(new Requests.Wrapped(event));
+    }
+  }
+
+  @Override
+  public void send(ServantAction<? super S> action) {
+    post(new Requests.Action<S>(requireNonNull(action, "action"), null));
+  }
+
+  @Override
+  public void sendWhen(Guard<? super S> guard, ServantAction<? super S> action) {
+    post(new Requests.Action<S>(requireNonNull(action, "action"), requireNonNull(guard, "guard")));
+  }
+
+  @Override
+  public <R extends @Nullable Object> FutureValue<R> call(ServantFunction<? super S, R> function) {
+    requireNonNull(function, "function");
+    return request(function, null);
+  }
+
+  @Override
+  public <R extends @Nullable Object> FutureValue<R> callWhen(
+      Guard<? super S> guard, ServantFunction<? super S, R> function) {
+    requireNonNull(function, "function");
+    requireNonNull(guard, "guard");
+    return request(function, guard);
+  }
+
+  @Override
+  public Future signal(ServantAction<? super S> action) {
+    requireNonNull(action, "action");
+    return request(
+        s -> {
+          action.run(s);
+          return null;
+        },
+        null);
+  }
+
+  @Override
+  public <R extends @Nullable Object> FutureValue<R> call(
+      SynchronizedMethodRequest<? super S, R> request) {
+    requireNonNull(request, "request");
+    ReplyFuture<R> f = newFuture();
+    request.reply(f);
+    post(request);
+    return f;
+  }
+
+  @Override
+  public <I> I proxy(Class<I> type) {
+    return Proxies.create(this, servant, type);
+  }
+
+  @Override
+  public void stop() {
+    for (; ; ) {
+      int s = state;
+      if ((s & STOPPED) != 0) {
+        return;
+      }
+      if (STATE.compareAndSet(this, s, s | STOPPED)) {
+        break;
+      }
+    }
+    runtime.unregister(this);
+    if (config.clock() instanceof ClockSupport.Owner owner) {
+      owner.support().unregister(this);
+    }
+    trySchedule();
+  }
+
+  @Override
+  public String toString() {
+    return "ActiveObject[" + address() + ", " + config.mode() + ", " + servant + "]";
+  }
+
+  // ---------------------------------------------------------------- sending
+
+  private <R extends @Nullable Object> FutureValue<R> request(
+      ServantFunction<? super S, R> function, @Nullable Guard<? super S> guard) {
+    ReplyFuture<R> f = newFuture();
+    post(new Requests.Function<S, R>(function, guard, f));
+    return f;
+  }
+
+  private <R extends @Nullable Object> ReplyFuture<R> newFuture() {
+    Core<?> sender = CURRENT.get();
+    if (sender != null && sender.config.mode() == Mode.SYNCHRONOUS) {
+      return new SyncFuture<>(sender, address(), sender.sendSeq + 1);
+    }
+    return new ValueFuture<>(this);
+  }
+
+  /** Routes an envelope from the calling thread's object (if any) to this object. */
+  void post(Envelope e) {
+    Core<?> sender = CURRENT.get();
+    Address from = null;
+    long seq = 0;
+    if (sender != null) {
+      from = sender.address();
+      seq = ++sender.sendSeq;
+    }
+    if (!e.bind(from, this, seq)) {
+      throw new IllegalArgumentException("this request was already sent once: " + e);
+    }
+    enqueue(e);
+  }
+
+  /** Queues a routed envelope, applying the overflow policy. Any thread. */
+  void enqueue(Envelope e) {
+    if ((state & STOPPED) != 0) {
+      runtime.countRejected();
+      throw new ObjectStoppedException(address());
+    }
+    LockedBuffer lb = locked;
+    if (lb != null) {
+      Envelope dropped = lb.offer(e, config.capacity());
+      if (dropped != null) {
+        reportDrop(dropped);
+      }
+    } else {
+      if (!e.privileged() && !reserve(e)) {
+        return;
+      }
+      if (e.privileged()) {
+        SIZE.getAndAdd(this, 1);
+      }
+      Envelope prev = (Envelope) TAIL.getAndSet(this, e);
+      prev.setNext(e);
+    }
+    if (config.mode() == Mode.ASYNCHRONOUS || (state & STOPPED) != 0) {
+      if ((state & SCHEDULED) == 0) {
+        trySchedule();
+      }
+    }
+  }
+
+  /** Takes one place in the buffer; false if the event was dropped. Throws if refused. */
+  private boolean reserve(Envelope e) {
+    int capacity = config.capacity();
+    long deadline = 0;
+    boolean waited = false;
+    for (; ; ) {
+      int s = size;
+      if (s < capacity) {
+        if (SIZE.compareAndSet(this, s, s + 1)) {
+          return true;
+        }
+        continue;
+      }
+      switch (config.overflow()) {
+        case OverflowPolicy.Reject r -> {
+          runtime.countRejected();
+          throw new BufferFullException(address(), capacity, "policy reject");
+        }
+        case OverflowPolicy.DropNewest d -> {
+          reportDrop(e);
+          return false;
+        }
+        case OverflowPolicy.Block b -> {
+          if (!waited) {
+            deadline = runtime.timeSource().nanoTime() + b.timeout().toNanos();
+            waited = true;
+          }
+          if (!awaitRoom(deadline)) {
+            runtime.countRejected();
+            throw new BufferFullException(
+                address(), capacity, "sender blocked for " + b.timeout() + " without room");
+          }
+        }
+        case OverflowPolicy.DropOldest d ->
+            throw new AssertionError("drop-oldest uses LockedBuffer");
+      }
+    }
+  }
+
+  private void reportDrop(Envelope e) {
+    runtime.countDropped();
+    e.abandon(new BufferFullException(address(), config.capacity(), "event dropped: " + e));
+    try {
+      config.listener().onDropped(address(), e.event(), config.overflow());
+    } catch (RuntimeException t) {
+      runtime.reportFailure(this, e.event(), t);
+    }
+  }
+
+  private void trySchedule() {
+    for (; ; ) {
+      int s = state;
+      if ((s & SCHEDULED) != 0) {
+        return;
+      }
+      if (STATE.compareAndSet(this, s, s | SCHEDULED)) {
+        runtime.dispatcher().schedule(this);
+        return;
+      }
+    }
+  }
+
+  // ---------------------------------------------------------------- consuming
+
+  /** One activation, on a worker thread: the object holds {@link #SCHEDULED}. */
+  void run() {
+    runner = Thread.currentThread();
+    CURRENT.set(this);
+    int processed = 0;
+    boolean more = false;
+    try {
+      if ((state & STOPPED) != 0) {
+        cancelQueued();
+      } else if (config.mode() == Mode.SYNCHRONOUS) {
+        processed = runInstant();
+      } else {
+        while (processed < BATCH) {
+          Envelope e = takeProcessable();
+          if (e == null) {
+            break;
+          }
+          processOne(e);
+          processed++;
+        }
+        more = processed == BATCH;
+      }
+    } finally {
+      CURRENT.remove();
+      runner = null;
+      runtime.countProcessed(processed);
+    }
+    if (more) {
+      runtime.dispatcher().schedule(this);
+      return;
+    }
+    STATE.getAndBitwiseAnd(this, ~SCHEDULED);
+    if (needsActivation()) {
+      trySchedule();
+    }
+  }
+
+  /** After an activation: is there something the idle object must still do? */
+  private boolean needsActivation() {
+    boolean stopped = (state & STOPPED) != 0;
+    if (stopped) {
+      return queueDepth() > 0;
+    }
+    if (config.mode() == Mode.SYNCHRONOUS) {
+      return false;
+    }
+    LockedBuffer lb = locked;
+    return lb != null ? lb.hasUnseen() : tail != head;
+  }
+
+  private void processOne(Envelope e) {
+    if (locked == null) {
+      SIZE.getAndAdd(this, -1);
+      roomMade();
+    }
+    try {
+      e.process(this);
+    } catch (Throwable t) {
+      ActiveRuntimeErrors.throwIfFatal(t);
+      e.failed(t);
+      runtime.reportFailure(this, e.event(), t);
+    } finally {
+      dirty = true;
+      e.clear();
+    }
+  }
+
+  /** The oldest processable event, or null if none; consumer only. */
+  private @Nullable Envelope takeProcessable() {
+    LockedBuffer lb = locked;
+    if (lb != null) {
+      Envelope e = lb.takeProcessable(this, dirty);
+      dirty = false;
+      return e;
+    }
+    if (deferredHead != null && dirty) {
+      dirty = false;
+      Envelope prev = null;
+      for (Envelope d = deferredHead; d != null; prev = d, d = d.deferredNext) {
+        if (processableSafely(d)) {
+          unlinkDeferred(prev, d);
+          return d;
+        }
+      }
+    }
+    dirty = false;
+    for (; ; ) {
+      Envelope e = pollInbox();
+      if (e == null) {
+        return null;
+      }
+      if (processableSafely(e)) {
+        return e;
+      }
+      appendDeferred(e);
+    }
+  }
+
+  boolean processableSafely(Envelope e) {
+    try {
+      return e.processable(servant);
+    } catch (Throwable t) {
+      ActiveRuntimeErrors.throwIfFatal(t);
+      // A guard that throws makes its event fail rather than block the buffer.
+      return true;
+    }
+  }
+
+  private @Nullable Envelope pollInbox() {
+    Envelope h = head;
+    Envelope n = h.next();
+    if (n == null) {
+      if (h == tail) {
+        return null;
+      }
+      while ((n = h.next()) == null) {
+        Thread.onSpinWait();
+      }
+    }
+    head = n;
+    return n;
+  }
+
+  private void appendDeferred(Envelope e) {
+    e.deferredNext = null;
+    if (deferredTail == null) {
+      deferredHead = e;
+    } else {
+      deferredTail.deferredNext = e;
+    }
+    deferredTail = e;
+    deferredCount++;
+  }
+
+  private void unlinkDeferred(@Nullable Envelope prev, Envelope d) {
+    Envelope next = d.deferredNext;
+    if (prev == null) {
+      deferredHead = next;
+    } else {
+      prev.deferredNext = next;
+    }
+    if (deferredTail == d) {
+      deferredTail = prev;
+    }
+    d.deferredNext = null;
+    deferredCount--;
+  }
+
+  /** Stopped: discard everything queued, failing the futures. */
+  private void cancelQueued() {
+    ObjectStoppedException stopped = new ObjectStoppedException(address());
+    List<Envelope> all = new ArrayList<>();
+    LockedBuffer lb = locked;
+    if (lb != null) {
+      lb.drainTo(all);
+    } else {
+      for (Envelope d = deferredHead; d != null; d = d.deferredNext) {
+        all.add(d);
+      }
+      deferredHead = null;
+      deferredTail = null;
+      deferredCount = 0;
+      for (Envelope e = pollInbox(); e != null; e = pollInbox()) {
+        all.add(e);
+      }
+    }
+    for (Envelope e : all) {
+      if (lb == null) {
+        SIZE.getAndAdd(this, -1);
+      }
+      e.abandon(stopped);
+      e.clear();
+    }
+    roomMade();
+  }
+
+  // ---------------------------------------------------------------- blocked senders
+
+  /** Senders parked by the block policy; created on first use. */
+  private volatile java.util.concurrent.@Nullable ConcurrentLinkedQueue<Thread> blocked;
+
+  private static final VarHandle BLOCKED;
+
+  static {
+    try {
+      BLOCKED =
+          MethodHandles.lookup()
+              .findVarHandle(
+                  Core.class, "blocked", java.util.concurrent.ConcurrentLinkedQueue.class);
+    } catch (ReflectiveOperationException e) {
+      throw new ExceptionInInitializerError(e);
+    }
+  }
+
+  /** Parks the sender until there may be room, the object stopped, or the deadline passed. */
+  private boolean awaitRoom(long deadline) {
+    var q = blocked;
+    if (q == null) {
+      BLOCKED.compareAndSet(this, null, new java.util.concurrent.ConcurrentLinkedQueue<Thread>());
+      q = blocked;
+    }
+    Thread me = Thread.currentThread();
+    q.add(me);
+    Dispatcher.beforeBlock();
+    try {
+      for (; ; ) {
+        if (size < config.capacity() || (state & STOPPED) != 0) {
+          return true;
+        }
+        long remaining = deadline - runtime.timeSource().nanoTime();
+        if (remaining <= 0) {
+          return false;
+        }
+        java.util.concurrent.locks.LockSupport.parkNanos(this, remaining);
+        if (Thread.interrupted()) {
+          me.interrupt();
+          return false;
+        }
+      }
+    } finally {
+      q.remove(me);
+      Dispatcher.afterBlock();
+    }
+  }
+
+  /** Wakes the blocked senders, if any, after the buffer made room. */
+  private void roomMade() {
+    var q = blocked;
+    if (q != null) {
+      for (Thread t : q) {
+        java.util.concurrent.locks.LockSupport.unpark(t);
+      }
+    }
+  }
+
+  // ---------------------------------------------------------------- synchronous mode
+
+  /** Clock, phase 1 of a release: fixes which events belong to this instant. */
+  void beginInstant() {
+    LockedBuffer lb = locked;
+    if (lb != null) {
+      lb.markRelease();
+    } else {
+      releasedSize = size;
+    }
+  }
+
+  /** Clock, phase 2: runs the instant on a worker; false if the object is stopped or busy. */
+  boolean scheduleInstant(long instant, CountDownLatch done) {
+    for (; ; ) {
+      int s = state;
+      if (s != 0) {
+        return false;
+      }
+      if (STATE.compareAndSet(this, 0, SCHEDULED)) {
+        pendingInstant = instant;
+        instantDone = done;
+        runtime.dispatcher().schedule(this);
+        return true;
+      }
+    }
+  }
+
+  private static final Comparator<Envelope> INSTANT_ORDER =
+      Comparator.comparing((Envelope e) -> e.from == null ? "" : e.from.runtime())
+          .thenComparingLong(e -> e.from == null ? 0 : e.from.id())
+          .thenComparingLong(e -> e.seq);
+
+  /** Takes every event waiting at the release, in a deterministic order, then the cycle. */
+  private int runInstant() {
+    long instant = pendingInstant;
+    CountDownLatch done = instantDone;
+    instantDone = null;
+    int processed = 0;
+    try {
+      List<Envelope> batch = new ArrayList<>();
+      LockedBuffer lb = locked;
+      if (lb != null) {
+        lb.takeReleased(batch);
+      } else {
+        for (Envelope d = deferredHead; d != null; d = d.deferredNext) {
+          batch.add(d);
+        }
+        deferredHead = null;
+        deferredTail = null;
+        int fresh = releasedSize - deferredCount;
+        deferredCount = 0;
+        for (int i = 0; i < fresh; i++) {
+          Envelope e = pollInbox();
+          if (e == null) {
+            break;
+          }
+          batch.add(e);
+        }
+      }
+      batch.sort(INSTANT_ORDER);
+      processed = processInstant(batch, lb);
+      if (servant instanceof ReactiveCycle rc) {
+        try {
+          rc.onCycle(instant);
+        } catch (Throwable t) {
+          ActiveRuntimeErrors.throwIfFatal(t);
+          runtime.reportFailure(this, null, t);
+        }
+      }
+    } finally {
+      if (done != null) {
+        done.countDown();
+      }
+    }
+    return processed;
+  }
+
+  /** Processes an instant's events to a fixpoint; what stays unprocessable waits for later. */
+  private int processInstant(List<Envelope> batch, @Nullable LockedBuffer lb) {
+    int processed = 0;
+    List<Envelope> pending = batch;
+    boolean progress = true;
+    while (progress && !pending.isEmpty()) {
+      progress = false;
+      List<Envelope> still = new ArrayList<>();
+      for (Envelope e : pending) {
+        if (processableSafely(e)) {
+          processOne(e);
+          processed++;
+          progress = true;
+        } else {
+          still.add(e);
+        }
+      }
+      pending = still;
+    }
+    if (lb != null) {
+      lb.putBack(pending);
+    } else {
+      for (Envelope e : pending) {
+        appendDeferred(e);
+      }
+    }
+    return processed;
+  }
+}

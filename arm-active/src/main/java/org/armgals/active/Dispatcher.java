@@ -1,0 +1,264 @@
+package org.armgals.active;
+
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.locks.Condition;
+import java.util.concurrent.locks.LockSupport;
+import java.util.concurrent.locks.ReentrantLock;
+import org.jspecify.annotations.Nullable;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Runs the activations of a runtime's objects on worker virtual threads.
+ *
+ * <p>Objects with work are in one shared run queue; {@code parallelism} workers take them. A worker
+ * with nothing to do spins briefly, then parks; a producer wakes a parked worker only if none is
+ * spinning. A worker that parks inside an activation (a wait by necessity, a sender blocked by a
+ * full buffer) calls {@link #beforeBlock()}: if fewer than {@code parallelism} workers are left
+ * unblocked, another is started, so a waiting object holds only its own virtual thread and never
+ * stalls the others. Surplus workers retire when they run out of work.
+ */
+final class Dispatcher {
+  private static final Logger LOG = LoggerFactory.getLogger(Dispatcher.class);
+  private static final int SPINS = 1_000;
+  private static final ThreadLocal<@Nullable Worker> CURRENT_WORKER = new ThreadLocal<>();
+
+  /** One worker thread; {@code running} is true while it polls or runs an activation. */
+  private static final class Worker {
+    final Dispatcher dispatcher;
+    volatile @Nullable Thread thread;
+    volatile boolean running;
+
+    Worker(Dispatcher dispatcher) {
+      this.dispatcher = dispatcher;
+    }
+  }
+
+  private final String name;
+  private final int parallelism;
+  private final ConcurrentLinkedQueue<Core<?>> runQueue = new ConcurrentLinkedQueue<>();
+  private final ConcurrentLinkedQueue<Worker> idle = new ConcurrentLinkedQueue<>();
+  private final Set<Worker> workers = ConcurrentHashMap.newKeySet();
+  private final AtomicInteger alive = new AtomicInteger();
+  private final AtomicInteger blocked = new AtomicInteger();
+  private final AtomicInteger spinning = new AtomicInteger();
+  private final AtomicInteger started = new AtomicInteger();
+  private final ReentrantLock quietLock = new ReentrantLock();
+  private final Condition quiet = quietLock.newCondition();
+  private final RuntimeImpl runtime;
+  private volatile boolean draining;
+  private volatile boolean terminated;
+
+  Dispatcher(RuntimeImpl runtime, String name, int parallelism) {
+    this.runtime = runtime;
+    this.name = name;
+    this.parallelism = parallelism;
+    for (int i = 0; i < parallelism; i++) {
+      alive.incrementAndGet();
+      startWorker();
+    }
+  }
+
+  int workerCount() {
+    return alive.get();
+  }
+
+  /** Queues an object that holds its SCHEDULED flag. Any thread. */
+  void schedule(Core<?> core) {
+    runQueue.offer(core);
+    if (spinning.get() == 0) {
+      Worker w = idle.poll();
+      if (w != null) {
+        LockSupport.unpark(w.thread);
+      }
+    }
+  }
+
+  // ---------------------------------------------------------------- blocking inside activations
+
+  /** The calling thread is about to park; if it is a worker, keep parallelism up. */
+  static void beforeBlock() {
+    Worker w = CURRENT_WORKER.get();
+    if (w != null) {
+      w.dispatcher.compensate();
+    }
+  }
+
+  /** The calling thread is back from parking. */
+  static void afterBlock() {
+    Worker w = CURRENT_WORKER.get();
+    if (w != null) {
+      w.dispatcher.blocked.decrementAndGet();
+    }
+  }
+
+  private void compensate() {
+    int b = blocked.incrementAndGet();
+    if (terminated) {
+      return;
+    }
+    for (; ; ) {
+      int a = alive.get();
+      if (a - b >= parallelism) {
+        return;
+      }
+      if (alive.compareAndSet(a, a + 1)) {
+        startWorker();
+        return;
+      }
+    }
+  }
+
+  // ---------------------------------------------------------------- workers
+
+  private void startWorker() {
+    Worker w = new Worker(this);
+    workers.add(w);
+    Thread t =
+        Thread.ofVirtual()
+            .name(name + "-worker-" + started.incrementAndGet())
+            .unstarted(() -> loop(w));
+    w.thread = t;
+    t.start();
+  }
+
+  private void loop(Worker w) {
+    CURRENT_WORKER.set(w);
+    try {
+      while (!terminated) {
+        w.running = true;
+        Core<?> c = runQueue.poll();
+        if (c == null) {
+          c = spin();
+        }
+        if (c == null) {
+          w.running = false;
+          signalIfDraining();
+          if (retireIfSurplus()) {
+            return;
+          }
+          parkIdle(w);
+          continue;
+        }
+        try {
+          c.run();
+        } catch (Throwable t) {
+          ActiveRuntimeErrors.throwIfFatal(t);
+          LOG.error("activation of {} failed outside its events", c.address(), t);
+        }
+      }
+    } finally {
+      w.running = false;
+      workers.remove(w);
+      signalIfDraining();
+    }
+  }
+
+  private @Nullable Core<?> spin() {
+    spinning.incrementAndGet();
+    try {
+      for (int i = 0; i < SPINS && !terminated; i++) {
+        Thread.onSpinWait();
+        Core<?> c = runQueue.poll();
+        if (c != null) {
+          return c;
+        }
+      }
+      return null;
+    } finally {
+      spinning.decrementAndGet();
+    }
+  }
+
+  private boolean retireIfSurplus() {
+    for (; ; ) {
+      int a = alive.get();
+      if (a - blocked.get() <= parallelism) {
+        return false;
+      }
+      if (alive.compareAndSet(a, a - 1)) {
+        return true;
+      }
+    }
+  }
+
+  private void parkIdle(Worker w) {
+    idle.add(w);
+    if (!runQueue.isEmpty() || terminated) {
+      idle.remove(w);
+      return;
+    }
+    LockSupport.park(this);
+    idle.remove(w);
+  }
+
+  // ---------------------------------------------------------------- shutdown
+
+  /** Whether no object is queued to run and no worker runs an activation. */
+  private boolean isQuiet() {
+    if (!runQueue.isEmpty()) {
+      return false;
+    }
+    for (Worker w : workers) {
+      if (w.running) {
+        return false;
+      }
+    }
+    return runQueue.isEmpty();
+  }
+
+  private void signalIfDraining() {
+    if (draining) {
+      quietLock.lock();
+      try {
+        quiet.signalAll();
+      } finally {
+        quietLock.unlock();
+      }
+    }
+  }
+
+  /** Waits until no object has work, at most until {@code deadline} (runtime time). */
+  boolean awaitQuiet(long deadline) {
+    draining = true;
+    quietLock.lock();
+    try {
+      while (!isQuiet()) {
+        long remaining = deadline - runtime.timeSource().nanoTime();
+        if (remaining <= 0) {
+          return false;
+        }
+        // Bounded wait: a wake-up can come from a worker that retired or parked without work.
+        quiet.await(Math.min(remaining, TimeUnit.MILLISECONDS.toNanos(10)), TimeUnit.NANOSECONDS);
+      }
+      return true;
+    } catch (InterruptedException e) {
+      Thread.currentThread().interrupt();
+      return false;
+    } finally {
+      quietLock.unlock();
+    }
+  }
+
+  /** Interrupts the workers that are inside an activation (a cancelling shutdown). */
+  void interruptRunning() {
+    for (Worker w : workers) {
+      Thread t = w.thread;
+      if (w.running && t != null) {
+        t.interrupt();
+      }
+    }
+  }
+
+  /** Stops every worker once it is done with its activation. */
+  void terminate() {
+    terminated = true;
+    for (Worker w : workers) {
+      LockSupport.unpark(w.thread);
+    }
+  }
+}

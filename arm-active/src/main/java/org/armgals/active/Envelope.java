@@ -1,0 +1,99 @@
+package org.armgals.active;
+
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
+import org.jspecify.annotations.Nullable;
+
+/**
+ * A node of an object's buffer, and the runtime's view of one queued event. Every event is queued
+ * as exactly one envelope: method requests are their own envelopes (no extra allocation), data
+ * events are wrapped.
+ *
+ * <p>{@link #next} is written by producers (release) and read by the consumer (acquire); the other
+ * fields are written before the envelope is published by the enqueue and read only by the receiving
+ * object.
+ */
+abstract class Envelope implements Event {
+  private static final VarHandle NEXT;
+
+  static {
+    try {
+      NEXT = MethodHandles.lookup().findVarHandle(Envelope.class, "next", Envelope.class);
+    } catch (ReflectiveOperationException e) {
+      throw new ExceptionInInitializerError(e);
+    }
+  }
+
+  @SuppressWarnings("unused") // accessed through NEXT
+  private volatile @Nullable Envelope next;
+
+  /** The sending object's address; null from outside any object. */
+  @Nullable Address from;
+
+  /** The receiving object; set when sent. */
+  @Nullable Core<?> to;
+
+  /** The sender's send counter when sent: orders a synchronous instant deterministically. */
+  long seq;
+
+  /** The link of the receiver's private list of deferred (not yet processable) events. */
+  @Nullable Envelope deferredNext;
+
+  final @Nullable Envelope next() {
+    return (Envelope) NEXT.getAcquire(this);
+  }
+
+  final void setNext(@Nullable Envelope n) {
+    NEXT.setRelease(this, n);
+  }
+
+  /** Binds the envelope to its route; false if it was already sent once. */
+  final boolean bind(@Nullable Address sender, Core<?> receiver, long sequence) {
+    if (to != null) {
+      return false;
+    }
+    from = sender;
+    to = receiver;
+    seq = sequence;
+    return true;
+  }
+
+  /** Whether it may be processed now by {@code servant}. Called on the receiver's thread. */
+  abstract boolean processable(Object servant);
+
+  /** Processes it on the receiver's thread; a thrown exception is a failure of this event. */
+  abstract void process(Core<?> receiver) throws Exception;
+
+  /** It will never be processed (dropped, object stopped): fail its future, if it has one. */
+  void abandon(Throwable cause) {}
+
+  /** It failed while processing: fail its future, if it has one. */
+  void failed(Throwable cause) {}
+
+  /** Lets go of the payload once processed: the last envelope stays as the buffer's stub. */
+  void clear() {}
+
+  /** The event as users see it (listeners, error handler). */
+  Event event() {
+    return this;
+  }
+
+  /** Whether it bypasses the capacity check (replies the receiver asked for). */
+  boolean privileged() {
+    return false;
+  }
+
+  @Override
+  public final @Nullable Address sender() {
+    return from;
+  }
+
+  @Override
+  public final Address destination() {
+    Core<?> c = to;
+    if (c == null) {
+      throw new IllegalStateException("not sent yet: " + getClass().getName());
+    }
+    return c.address();
+  }
+}

@@ -1,0 +1,32 @@
+package org.armgals.active;
+
+import java.util.function.BooleanSupplier;
+
+/**
+ * A clock stepped by hand (style rule: time is injected; Pekko's {@code ManualTime}). Each step is
+ * one instant: it releases every registered object and returns once all have finished their cycle,
+ * so a sequence of steps with the same inputs gives the same per-instant trace whatever the number
+ * of worker threads.
+ *
+ * <p>Threading: one thread steps at a time; {@link #step} must not be called from inside an object
+ * released by this clock.
+ */
+public sealed interface ManualClock extends Clock permits ManualClockImpl {
+
+  /** Releases one instant and waits until every object finished it; returns its number. */
+  long step();
+
+  /**
+   * Releases {@code instants} instants, one after the other, as fast as possible.
+   *
+   * @throws IllegalArgumentException {@code instants} is negative
+   */
+  void step(long instants);
+
+  /**
+   * Steps until {@code condition} holds after an instant, at most {@code maxInstants} instants.
+   *
+   * @return whether the condition held
+   */
+  boolean stepUntil(BooleanSupplier condition, long maxInstants);
+}

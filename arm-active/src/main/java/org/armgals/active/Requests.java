@@ -1,0 +1,197 @@
+package org.armgals.active;
+
+import org.jspecify.annotations.Nullable;
+
+/** The envelopes the runtime makes itself: lambda requests, wrapped events, future replies. */
+final class Requests {
+  private Requests() {}
+
+  /** A one-way request from {@link ActiveRef#send(ServantAction)}. */
+  static final class Action<S> extends Envelope {
+    private @Nullable ServantAction<? super S> action;
+    private @Nullable Guard<? super S> guard;
+
+    Action(ServantAction<? super S> action, @Nullable Guard<? super S> guard) {
+      this.action = action;
+      this.guard = guard;
+    }
+
+    @Override
+    @SuppressWarnings("unchecked")
+    boolean processable(Object servant) {
+      Guard<? super S> g = guard;
+      return g == null || g.test((S) servant);
+    }
+
+    @Override
+    @SuppressWarnings({"unchecked", "NullAway"})
+    void process(Core<?> receiver) throws Exception {
+      ServantAction<? super S> a = action;
+      if (a != null) {
+        a.run((S) receiver.servant());
+      }
+    }
+
+    @Override
+    void clear() {
+      action = null;
+      guard = null;
+    }
+
+    @Override
+    public String toString() {
+      return "OneWayRequest[" + from + " -> " + (to == null ? "?" : to.address()) + "]";
+    }
+  }
+
+  /** A synchronized request from {@link ActiveRef#call(ServantFunction)} or {@code signal}. */
+  static final class Function<S, R extends @Nullable Object> extends Envelope {
+    private @Nullable ServantFunction<? super S, R> function;
+    private @Nullable Guard<? super S> guard;
+    private final Reply<R> reply;
+
+    Function(ServantFunction<? super S, R> function, @Nullable Guard<? super S> guard, Reply<R> r) {
+      this.function = function;
+      this.guard = guard;
+      this.reply = r;
+    }
+
+    @Override
+    @SuppressWarnings("unchecked")
+    boolean processable(Object servant) {
+      Guard<? super S> g = guard;
+      return g == null || g.test((S) servant);
+    }
+
+    @Override
+    @SuppressWarnings("unchecked")
+    void process(Core<?> receiver) throws Exception {
+      ServantFunction<? super S, R> f = function;
+      if (f == null) {
+        throw new IllegalStateException("request processed twice");
+      }
+      reply.complete(f.apply((S) receiver.servant()));
+    }
+
+    @Override
+    void abandon(Throwable cause) {
+      reply.fail(cause);
+    }
+
+    @Override
+    void failed(Throwable cause) {
+      reply.fail(cause);
+    }
+
+    @Override
+    void clear() {
+      function = null;
+      guard = null;
+    }
+
+    @Override
+    public String toString() {
+      return "SynchronizedRequest[" + from + " -> " + (to == null ? "?" : to.address()) + "]";
+    }
+  }
+
+  /** A data event, or a user {@link Callable} that is not one of the runtime's request classes. */
+  static final class Wrapped extends Envelope {
+    private final Event event;
+    private boolean bound;
+
+    Wrapped(Event event) {
+      this.event = event;
+    }
+
+    @Override
+    boolean processable(Object servant) {
+      if (event instanceof Callable<?, ?> c) {
+        bindServant(c, servant);
+        return c.isProcessable();
+      }
+      if (servant instanceof EventProcessor p) {
+        return p.isProcessable(event);
+      }
+      return event.isProcessable();
+    }
+
+    @Override
+    void process(Core<?> receiver) throws Exception {
+      Object servant = receiver.servant();
+      if (event instanceof Callable<?, ?> c) {
+        bindServant(c, servant);
+        c.apply();
+      } else if (servant instanceof EventProcessor p) {
+        p.process(event);
+      } else {
+        throw new IllegalStateException(
+            "servant "
+                + servant.getClass().getName()
+                + " of "
+                + receiver.address()
+                + " takes no data events (it does not implement EventProcessor); got "
+                + event);
+      }
+    }
+
+    @SuppressWarnings({"unchecked", "rawtypes"})
+    private void bindServant(Callable c, Object servant) {
+      if (!bound) {
+        c.setServant(servant);
+        bound = true;
+      }
+    }
+
+    @Override
+    Event event() {
+      return event;
+    }
+
+    @Override
+    public String toString() {
+      return event.toString();
+    }
+  }
+
+  /** The reply to a synchronous object's request, taken at one of its releases. */
+  static final class FutureReply extends Envelope {
+    private final SyncFuture<?> future;
+    private final @Nullable Object value;
+    private final @Nullable Throwable failure;
+
+    FutureReply(SyncFuture<?> future, @Nullable Object value, @Nullable Throwable failure) {
+      this.future = future;
+      this.value = value;
+      this.failure = failure;
+    }
+
+    @Override
+    boolean processable(Object servant) {
+      return true;
+    }
+
+    @Override
+    void process(Core<?> receiver) {
+      future.arrive(value, failure);
+    }
+
+    @Override
+    boolean privileged() {
+      return true;
+    }
+
+    @Override
+    Event event() {
+      Address sender = future.completer();
+      Core<?> owner = to;
+      return new FutureEvent(
+          sender, owner == null ? sender : owner.address(), future.requestId(), value, failure);
+    }
+
+    @Override
+    public String toString() {
+      return event().toString();
+    }
+  }
+}

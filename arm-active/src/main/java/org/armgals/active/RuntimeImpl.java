@@ -1,0 +1,313 @@
+package org.armgals.active;
+
+import static java.util.Objects.requireNonNull;
+
+import java.lang.management.ManagementFactory;
+import java.time.Duration;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.LongAdder;
+import javax.management.JMException;
+import javax.management.ObjectName;
+import javax.management.StandardMBean;
+import org.armgals.active.spi.ErrorHandler;
+import org.armgals.active.spi.Transport;
+import org.jspecify.annotations.Nullable;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/** The runtime behind {@link ActiveRuntime}. */
+final class RuntimeImpl implements ActiveRuntime {
+  private static final Logger LOG = LoggerFactory.getLogger(RuntimeImpl.class);
+  private static final int RUNNING = 0;
+  private static final int STOPPING = 1;
+  private static final int TERMINATED = 2;
+
+  private final String name;
+  private final Dispatcher dispatcher;
+  private final ErrorHandler errorHandler;
+  private final @Nullable Transport transport;
+  private final TimeSource timeSource;
+  private final ConcurrentHashMap<Long, Core<?>> objects = new ConcurrentHashMap<>();
+  private final Set<ClockSupport> clocks = ConcurrentHashMap.newKeySet();
+  private final AtomicLong ids = new AtomicLong();
+  private final AtomicInteger phase = new AtomicInteger(RUNNING);
+  private final LongAdder processed = new LongAdder();
+  private final LongAdder dropped = new LongAdder();
+  private final LongAdder rejected = new LongAdder();
+  private final LongAdder failures = new LongAdder();
+  private volatile boolean cleanShutdown;
+  private final @Nullable ObjectName mbeanName;
+
+  RuntimeImpl(
+      String name,
+      int workers,
+      ErrorHandler errorHandler,
+      @Nullable Transport transport,
+      TimeSource timeSource,
+      boolean jmx) {
+    this.name = name;
+    this.errorHandler = errorHandler;
+    this.transport = transport;
+    this.timeSource = timeSource;
+    this.dispatcher = new Dispatcher(this, name, workers);
+    if (transport != null) {
+      transport.attach(name, this::deliverInbound);
+    }
+    this.mbeanName = jmx ? registerMBean() : null;
+  }
+
+  Dispatcher dispatcher() {
+    return dispatcher;
+  }
+
+  TimeSource timeSource() {
+    return timeSource;
+  }
+
+  @Override
+  public String name() {
+    return name;
+  }
+
+  // ---------------------------------------------------------------- objects
+
+  @Override
+  public <S> ActiveObject<S> spawn(S servant) {
+    return spawn(servant, ObjectConfig.asynchronous());
+  }
+
+  @Override
+  public <S> ActiveObject<S> spawn(S servant, ObjectConfig config) {
+    requireNonNull(servant, "servant");
+    requireNonNull(config, "config");
+    if (phase.get() != RUNNING) {
+      throw new IllegalStateException("runtime " + name + " is shut down; cannot spawn " + servant);
+    }
+    Core<S> core = new Core<>(this, ids.incrementAndGet(), servant, config);
+    objects.put(core.id, core);
+    if (config.clock() instanceof ClockSupport.Owner owner) {
+      clocks.add(owner.support());
+      owner.support().register(core);
+    }
+    return core;
+  }
+
+  void unregister(Core<?> core) {
+    objects.remove(core.id, core);
+  }
+
+  @Override
+  @SuppressWarnings("unchecked")
+  public <S> ActiveRef<S> ref(Address address) {
+    requireNonNull(address, "address");
+    if (address.runtime().equals(name)) {
+      Core<?> core = objects.get(address.id());
+      if (core == null) {
+        throw new ObjectStoppedException(address);
+      }
+      return (ActiveRef<S>) core;
+    }
+    Transport t = transport;
+    if (t == null) {
+      throw new IllegalArgumentException(
+          "address "
+              + address
+              + " names runtime '"
+              + address.runtime()
+              + "' but runtime '"
+              + name
+              + "' has no transport; give one to ActiveRuntime.builder().transport(...)");
+    }
+    return new RemoteRef<>(address, t);
+  }
+
+  private void deliverInbound(Address destination, Event event) {
+    Core<?> core = objects.get(destination.id());
+    if (core == null) {
+      rejected.increment();
+      throw new ObjectStoppedException(destination);
+    }
+    core.send(event);
+  }
+
+  // ---------------------------------------------------------------- counters
+
+  void countProcessed(int n) {
+    if (n > 0) {
+      processed.add(n);
+    }
+  }
+
+  void countDropped() {
+    dropped.increment();
+  }
+
+  void countRejected() {
+    rejected.increment();
+  }
+
+  /** A failure of {@code core} on {@code event} (null: its cycle): count, handler, listener. */
+  void reportFailure(Core<?> core, @Nullable Event event, Throwable error) {
+    failures.increment();
+    try {
+      errorHandler.onError(core.address(), event, error);
+    } catch (RuntimeException e) {
+      LOG.error("error handler of runtime {} threw", name, e);
+    }
+    try {
+      core.config().listener().onFailed(core.address(), event, error);
+    } catch (RuntimeException e) {
+      LOG.error("listener of {} threw", core.address(), e);
+    }
+  }
+
+  @Override
+  public RuntimeStats stats() {
+    long queued = 0;
+    long max = 0;
+    for (Core<?> c : objects.values()) {
+      int d = c.queueDepth();
+      queued += d;
+      max = Math.max(max, d);
+    }
+    long overruns = 0;
+    for (ClockSupport c : clocks) {
+      overruns += c.overruns();
+    }
+    return new RuntimeStats(
+        objects.size(),
+        queued,
+        max,
+        processed.sum(),
+        dropped.sum(),
+        rejected.sum(),
+        failures.sum(),
+        overruns);
+  }
+
+  // ---------------------------------------------------------------- shutdown
+
+  @Override
+  public boolean shutdown(ShutdownMode mode, Duration timeout) {
+    requireNonNull(mode, "mode");
+    requireNonNull(timeout, "timeout");
+    if (timeout.isNegative()) {
+      throw new IllegalArgumentException("timeout must be >= 0, was " + timeout);
+    }
+    if (!phase.compareAndSet(RUNNING, STOPPING)) {
+      return cleanShutdown;
+    }
+    long deadline = timeSource.nanoTime() + timeout.toNanos();
+    boolean clean = true;
+    if (mode == ShutdownMode.DRAIN) {
+      clean = dispatcher.awaitQuiet(deadline);
+    }
+    for (Core<?> c : objects.values()) {
+      c.stop();
+    }
+    if (mode == ShutdownMode.CANCEL) {
+      dispatcher.interruptRunning();
+    }
+    clean &= dispatcher.awaitQuiet(deadline);
+    dispatcher.terminate();
+    if (transport != null) {
+      transport.detach(name);
+    }
+    unregisterMBean();
+    cleanShutdown = clean;
+    phase.set(TERMINATED);
+    return clean;
+  }
+
+  @Override
+  public void close() {
+    shutdown(ShutdownMode.DRAIN, Duration.ofSeconds(10));
+  }
+
+  // ---------------------------------------------------------------- JMX
+
+  private @Nullable ObjectName registerMBean() {
+    try {
+      ObjectName on =
+          new ObjectName("org.armgals:type=ActiveRuntime,name=" + ObjectName.quote(name));
+      ManagementFactory.getPlatformMBeanServer()
+          .registerMBean(new StandardMBean(new Figures(), ActiveRuntimeMXBean.class, true), on);
+      return on;
+    } catch (JMException e) {
+      LOG.warn("runtime {}: its MBean could not be registered; figures stay in stats()", name, e);
+      return null;
+    }
+  }
+
+  private void unregisterMBean() {
+    ObjectName on = mbeanName;
+    if (on != null) {
+      try {
+        ManagementFactory.getPlatformMBeanServer().unregisterMBean(on);
+      } catch (JMException e) {
+        LOG.warn("runtime {}: its MBean could not be unregistered", name, e);
+      }
+    }
+  }
+
+  /** The MBean: reads {@link #stats()}. */
+  private final class Figures implements ActiveRuntimeMXBean {
+    @Override
+    public String getName() {
+      return name;
+    }
+
+    @Override
+    public long getObjects() {
+      return stats().objects();
+    }
+
+    @Override
+    public long getQueuedEvents() {
+      return stats().queuedEvents();
+    }
+
+    @Override
+    public long getMaxQueueDepth() {
+      return stats().maxQueueDepth();
+    }
+
+    @Override
+    public long getProcessed() {
+      return processed.sum();
+    }
+
+    @Override
+    public long getDropped() {
+      return dropped.sum();
+    }
+
+    @Override
+    public long getRejected() {
+      return rejected.sum();
+    }
+
+    @Override
+    public long getFailures() {
+      return failures.sum();
+    }
+
+    @Override
+    public long getOverruns() {
+      return stats().overruns();
+    }
+
+    @Override
+    public int getWorkers() {
+      return dispatcher.workerCount();
+    }
+  }
+
+  @Override
+  public String toString() {
+    return "ActiveRuntime[" + name + "]";
+  }
+}

@@ -1,0 +1,136 @@
+package org.armgals.active;
+
+import java.time.Duration;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionStage;
+import org.jspecify.annotations.Nullable;
+
+/**
+ * The future of a synchronous (reactive) object: active wait (paper §5.2). The receiver's
+ * completion is not written here directly; it is queued to the owner as a {@link
+ * Requests.FutureReply} and takes effect when the owner processes it at one of its releases, so the
+ * instant at which a value appears depends only on instants, never on thread timing.
+ *
+ * <p>All reads and the arrival happen on the owner's thread (its instants are sequential).
+ */
+final class SyncFuture<T extends @Nullable Object>
+    implements ReplyFuture<T>, SynchronousFutureValue<T> {
+  private final Core<?> owner;
+  private final Address completer;
+  private final long requestId;
+
+  private boolean arrived;
+  private @Nullable Object value;
+  private @Nullable Throwable failure;
+  private @Nullable CompletableFuture<T> stage;
+
+  SyncFuture(Core<?> owner, Address completer, long requestId) {
+    this.owner = owner;
+    this.completer = completer;
+    this.requestId = requestId;
+  }
+
+  Address completer() {
+    return completer;
+  }
+
+  long requestId() {
+    return requestId;
+  }
+
+  // receiver side: queue the reply to the owner
+  @Override
+  public void complete(T v) {
+    deliver(v, null);
+  }
+
+  @Override
+  public void fail(Throwable cause) {
+    deliver(null, cause);
+  }
+
+  private void deliver(@Nullable Object v, @Nullable Throwable cause) {
+    try {
+      owner.post(new Requests.FutureReply(this, v, cause));
+    } catch (ObjectStoppedException stopped) {
+      // The owner is gone; nobody can read this future any more.
+      owner.runtime.countDropped();
+    }
+  }
+
+  // owner side
+  synchronized void arrive(@Nullable Object v, @Nullable Throwable cause) {
+    value = v;
+    failure = cause;
+    arrived = true;
+    CompletableFuture<T> s = stage;
+    if (s != null) {
+      completeStage(s);
+    }
+  }
+
+  @SuppressWarnings("unchecked")
+  private void completeStage(CompletableFuture<T> s) {
+    Throwable f = failure;
+    if (f != null) {
+      s.completeExceptionally(f);
+    } else {
+      s.complete((T) value);
+    }
+  }
+
+  @Override
+  public synchronized boolean isDone() {
+    return arrived;
+  }
+
+  @Override
+  public void touch() {
+    getValue();
+  }
+
+  @Override
+  public void touch(Duration timeout) {
+    getValue();
+  }
+
+  @Override
+  @SuppressWarnings("unchecked")
+  public synchronized T getValue() {
+    if (!arrived) {
+      throw new FutureNotAvailableException(completer.toString(), owner.currentInstant());
+    }
+    Throwable f = failure;
+    if (f != null) {
+      if (f instanceof ObjectStoppedException || f instanceof BufferFullException) {
+        throw (ActiveException) f;
+      }
+      throw new RequestFailedException(completer.toString(), f);
+    }
+    return (T) value;
+  }
+
+  /** Never waits: the same as {@link #getValue()}. */
+  @Override
+  public T getValue(Duration timeout) {
+    return getValue();
+  }
+
+  @Override
+  public synchronized CompletionStage<T> toCompletionStage() {
+    CompletableFuture<T> s = stage;
+    if (s == null) {
+      s = new CompletableFuture<>();
+      stage = s;
+      if (arrived) {
+        completeStage(s);
+      }
+    }
+    return s.minimalCompletionStage();
+  }
+
+  @Override
+  public synchronized String toString() {
+    return "SynchronousFutureValue[" + completer + ", " + (arrived ? "available" : "pending") + "]";
+  }
+}
