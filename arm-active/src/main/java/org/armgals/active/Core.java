@@ -625,6 +625,26 @@ final class Core<S> implements ActiveObject<S> {
           .thenComparingLong(e -> e.from == null ? 0 : e.from.id())
           .thenComparingLong(e -> e.seq);
 
+  /** Retries skipped events oldest first, restarting after each one processed. */
+  private int retrySkipped(List<Envelope> skipped) {
+    int processed = 0;
+    boolean progress = true;
+    while (progress) {
+      progress = false;
+      for (int i = 0; i < skipped.size(); i++) {
+        Envelope e = skipped.get(i);
+        if (processableSafely(e)) {
+          skipped.remove(i);
+          processOne(e);
+          processed++;
+          progress = true;
+          break;
+        }
+      }
+    }
+    return processed;
+  }
+
   /** Takes every event waiting at the release, in a deterministic order, then the cycle. */
   private int runInstant() {
     long instant = pendingInstant;
@@ -670,29 +690,27 @@ final class Core<S> implements ActiveObject<S> {
     return processed;
   }
 
-  /** Processes an instant's events to a fixpoint; what stays unprocessable waits for later. */
+  /**
+   * Processes an instant's events in order with the asynchronous rule: after each processed event
+   * (a state change) the events skipped so far are retried, oldest first, before newer ones. What
+   * stays unprocessable waits for a later instant.
+   */
   private int processInstant(List<Envelope> batch, @Nullable LockedBuffer lb) {
     int processed = 0;
-    List<Envelope> pending = batch;
-    boolean progress = true;
-    while (progress && !pending.isEmpty()) {
-      progress = false;
-      List<Envelope> still = new ArrayList<>();
-      for (Envelope e : pending) {
-        if (processableSafely(e)) {
-          processOne(e);
-          processed++;
-          progress = true;
-        } else {
-          still.add(e);
-        }
+    List<Envelope> skipped = new ArrayList<>();
+    for (Envelope e : batch) {
+      if (!processableSafely(e)) {
+        skipped.add(e);
+        continue;
       }
-      pending = still;
+      processOne(e);
+      processed++;
+      processed += retrySkipped(skipped);
     }
     if (lb != null) {
-      lb.putBack(pending);
+      lb.putBack(skipped);
     } else {
-      for (Envelope e : pending) {
+      for (Envelope e : skipped) {
         appendDeferred(e);
       }
     }
