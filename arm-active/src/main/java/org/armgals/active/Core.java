@@ -363,10 +363,13 @@ final class Core<S> implements ActiveObject<S> {
     CURRENT.set(this);
     int processed = 0;
     boolean more = false;
+    CountDownLatch instant = null;
     try {
       if ((state & STOPPED) != 0) {
         cancelQueued();
       } else if (config.mode() == Mode.SYNCHRONOUS) {
+        instant = instantDone;
+        instantDone = null;
         processed = runInstant();
       } else {
         while (processed < BATCH) {
@@ -383,13 +386,17 @@ final class Core<S> implements ActiveObject<S> {
       CURRENT.remove();
       runner = null;
       runtime.countProcessed(processed);
+      if (more) {
+        runtime.dispatcher().schedule(this);
+      } else {
+        STATE.getAndBitwiseAnd(this, ~SCHEDULED);
+      }
+      // The instant ends only once the object can be released again.
+      if (instant != null) {
+        instant.countDown();
+      }
     }
-    if (more) {
-      runtime.dispatcher().schedule(this);
-      return;
-    }
-    STATE.getAndBitwiseAnd(this, ~SCHEDULED);
-    if (needsActivation()) {
+    if (!more && needsActivation()) {
       trySchedule();
     }
   }
@@ -647,44 +654,34 @@ final class Core<S> implements ActiveObject<S> {
 
   /** Takes every event waiting at the release, in a deterministic order, then the cycle. */
   private int runInstant() {
-    long instant = pendingInstant;
-    CountDownLatch done = instantDone;
-    instantDone = null;
-    int processed = 0;
-    try {
-      List<Envelope> batch = new ArrayList<>();
-      LockedBuffer lb = locked;
-      if (lb != null) {
-        lb.takeReleased(batch);
-      } else {
-        for (Envelope d = deferredHead; d != null; d = d.deferredNext) {
-          batch.add(d);
-        }
-        deferredHead = null;
-        deferredTail = null;
-        int fresh = releasedSize - deferredCount;
-        deferredCount = 0;
-        for (int i = 0; i < fresh; i++) {
-          Envelope e = pollInbox();
-          if (e == null) {
-            break;
-          }
-          batch.add(e);
-        }
+    List<Envelope> batch = new ArrayList<>();
+    LockedBuffer lb = locked;
+    if (lb != null) {
+      lb.takeReleased(batch);
+    } else {
+      for (Envelope d = deferredHead; d != null; d = d.deferredNext) {
+        batch.add(d);
       }
-      batch.sort(INSTANT_ORDER);
-      processed = processInstant(batch, lb);
-      if (servant instanceof ReactiveCycle rc) {
-        try {
-          rc.onCycle(instant);
-        } catch (Throwable t) {
-          ActiveRuntimeErrors.throwIfFatal(t);
-          runtime.reportFailure(this, null, t);
+      deferredHead = null;
+      deferredTail = null;
+      int fresh = releasedSize - deferredCount;
+      deferredCount = 0;
+      for (int i = 0; i < fresh; i++) {
+        Envelope e = pollInbox();
+        if (e == null) {
+          break;
         }
+        batch.add(e);
       }
-    } finally {
-      if (done != null) {
-        done.countDown();
+    }
+    batch.sort(INSTANT_ORDER);
+    int processed = processInstant(batch, lb);
+    if (servant instanceof ReactiveCycle rc) {
+      try {
+        rc.onCycle(pendingInstant);
+      } catch (Throwable t) {
+        ActiveRuntimeErrors.throwIfFatal(t);
+        runtime.reportFailure(this, null, t);
       }
     }
     return processed;
