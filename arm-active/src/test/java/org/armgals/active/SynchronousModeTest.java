@@ -248,6 +248,7 @@ class SynchronousModeTest {
       clock.start();
       assertThat(fifty.await(30, TimeUnit.SECONDS)).isTrue();
       t.stop();
+      clock.close(); // joins the clock thread: every release is recorded
       ClockStats stats = clock.stats();
       assertThat(stats.instants()).isGreaterThanOrEqualTo(50);
       assertThat(stats.meanPeriod()).isPositive();
