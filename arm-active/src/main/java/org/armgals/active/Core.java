@@ -389,6 +389,7 @@ final class Core<S> implements ActiveObject<S> {
       if (more) {
         runtime.dispatcher().schedule(this);
       } else {
+        roomMade();
         STATE.getAndBitwiseAnd(this, ~SCHEDULED);
       }
       // The instant ends only once the object can be released again.
@@ -416,8 +417,12 @@ final class Core<S> implements ActiveObject<S> {
 
   private void processOne(Envelope e) {
     if (locked == null) {
-      SIZE.getAndAdd(this, -1);
-      roomMade();
+      int left = (int) SIZE.getAndAdd(this, -1) - 1;
+      // Wake blocked senders at half capacity, not for every slot: one park and unpark per
+      // event would make a full buffer far slower than a half-empty one.
+      if (left <= config.capacity() >> 1) {
+        roomMade();
+      }
     }
     try {
       e.process(this);
