@@ -68,6 +68,8 @@ final class Core<S> implements ActiveObject<S> {
   private @Nullable Envelope deferredTail;
   private int deferredCount;
   private boolean dirty;
+  private int taken;
+  private final int takenBatch;
 
   /** Written by this object's own thread only: numbers what it sends. */
   private long sendSeq;
@@ -92,6 +94,7 @@ final class Core<S> implements ActiveObject<S> {
     this.config = config;
     this.locked =
         config.overflow() instanceof OverflowPolicy.DropOldest ? new LockedBuffer() : null;
+    this.takenBatch = Math.max(1, Math.min(64, config.capacity() >> 6));
     Envelope stub = new Requests.Action<S>(s -> {}, null);
     this.head = stub;
     this.tail = stub;
@@ -299,12 +302,13 @@ final class Core<S> implements ActiveObject<S> {
     long deadline = 0;
     boolean waited = false;
     for (; ; ) {
-      int s = size;
-      if (s < capacity) {
-        if (SIZE.compareAndSet(this, s, s + 1)) {
-          return true;
-        }
-        continue;
+      if ((int) SIZE.getAndAdd(this, 1) < capacity) {
+        return true;
+      }
+      // Over: give the place back. Another sender may have seen the transient excess and be
+      // about to park; wake it if there is room after all.
+      if ((int) SIZE.getAndAdd(this, -1) - 1 < capacity) {
+        roomMade();
       }
       switch (config.overflow()) {
         case OverflowPolicy.Reject r -> {
@@ -383,6 +387,7 @@ final class Core<S> implements ActiveObject<S> {
         more = processed == BATCH;
       }
     } finally {
+      returnTaken();
       CURRENT.remove();
       runner = null;
       runtime.countProcessed(processed);
@@ -415,15 +420,34 @@ final class Core<S> implements ActiveObject<S> {
     return lb != null ? lb.hasUnseen() : tail != head;
   }
 
-  private void processOne(Envelope e) {
-    if (locked == null) {
-      int left = (int) SIZE.getAndAdd(this, -1) - 1;
-      // Wake blocked senders at half capacity, not for every slot: one park and unpark per
-      // event would make a full buffer far slower than a half-empty one.
-      if (left <= config.capacity() >> 1) {
-        roomMade();
-      }
+  /**
+   * Counts an event taken out of the buffer. Places go back to the senders in batches of {@link
+   * #takenBatch} (at most 1/64 of the capacity, 1 for buffers under 128): one contended atomic per
+   * batch rather than per event. Every batch is returned before the object parks or goes idle.
+   */
+  private void taken() {
+    if (locked == null && ++taken >= takenBatch) {
+      returnTaken();
     }
+  }
+
+  /** Returns the places of the events taken so far. Consumer only. */
+  void returnTaken() {
+    int t = taken;
+    if (t == 0) {
+      return;
+    }
+    taken = 0;
+    int left = (int) SIZE.getAndAdd(this, -t) - t;
+    // Wake blocked senders at half capacity, not for every place: a park and an unpark per event
+    // would make a full buffer far slower than a half-empty one.
+    if (left <= config.capacity() >> 1) {
+      roomMade();
+    }
+  }
+
+  private void processOne(Envelope e) {
+    taken();
     try {
       e.process(this);
     } catch (Throwable t) {
@@ -565,6 +589,10 @@ final class Core<S> implements ActiveObject<S> {
 
   /** Parks the sender until there may be room, the object stopped, or the deadline passed. */
   private boolean awaitRoom(long deadline) {
+    Core<?> me = CURRENT.get();
+    if (me != null) {
+      me.returnTaken();
+    }
     var q = blocked;
     if (q == null) {
       BLOCKED.compareAndSet(this, null, new java.util.concurrent.ConcurrentLinkedQueue<Thread>());

@@ -203,6 +203,7 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
                 + completerName()
                 + "; reactive objects use the SynchronousFuture that call() gives them");
       }
+      me.returnTaken();
       me.waitingFor = this;
       List<Address> cycle = findCycle(me);
       if (cycle != null) {
