@@ -589,9 +589,9 @@ final class Core<S> implements ActiveObject<S> {
 
   /** Parks the sender until there may be room, the object stopped, or the deadline passed. */
   private boolean awaitRoom(long deadline) {
-    Core<?> me = CURRENT.get();
-    if (me != null) {
-      me.returnTaken();
+    Core<?> sender = CURRENT.get();
+    if (sender != null) {
+      sender.returnTaken();
     }
     var q = blocked;
     if (q == null) {

@@ -233,8 +233,8 @@ class SynchronousModeTest {
 
   @Test
   void realTimeClockReleasesPeriodicallyAndMeasuresItself() throws Exception {
-    try (RealTimeClock clock = Clock.realTime(Duration.ofMillis(2));
-        ActiveRuntime rt = ActiveRuntime.builder().jmx(false).build()) {
+    RealTimeClock clock = Clock.realTime(Duration.ofMillis(2));
+    try (ActiveRuntime rt = ActiveRuntime.builder().jmx(false).build()) {
       CountDownLatch fifty = new CountDownLatch(50);
       List<Long> instants = new ArrayList<>();
       final class Ticker implements ReactiveCycle {
@@ -262,6 +262,8 @@ class SynchronousModeTest {
       assertThat(copy).isSorted().doesNotHaveDuplicates();
       long skipped = copy.get(copy.size() - 1) - copy.get(0) + 1 - copy.size();
       assertThat(stats.overruns()).isGreaterThanOrEqualTo(skipped > 0 ? 1 : 0);
+    } finally {
+      clock.close();
     }
   }
 
