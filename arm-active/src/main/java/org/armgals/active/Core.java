@@ -392,7 +392,7 @@ final class Core<S> implements ActiveObject<S> {
       runner = null;
       runtime.countProcessed(processed);
       if (more) {
-        runtime.dispatcher().schedule(this);
+        runtime.dispatcher().requeue(this); // fairness: the back of the shared queue
       } else {
         roomMade();
         STATE.getAndBitwiseAnd(this, ~SCHEDULED);
