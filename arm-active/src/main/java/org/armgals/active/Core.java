@@ -69,7 +69,6 @@ final class Core<S> implements ActiveObject<S> {
   private int deferredCount;
   private boolean dirty;
   private int taken;
-  private final int takenBatch;
 
   /** Written by this object's own thread only: numbers what it sends. */
   private long sendSeq;
@@ -77,15 +76,35 @@ final class Core<S> implements ActiveObject<S> {
   /** The future this object's thread waits on, for wait-for cycle detection. */
   volatile @Nullable ValueFuture<?> waitingFor;
 
-  /** The thread running an activation, for a cancelling shutdown. */
-  volatile @Nullable Thread runner;
+  /** Synchronous mode only: what the clock's release fixed. Null for asynchronous objects. */
+  private final @Nullable Instant instant;
 
-  /** Synchronous mode: the events waiting at the last release, and the instant to run. */
-  private int releasedSize;
-
-  private long pendingInstant;
-  private @Nullable CountDownLatch instantDone;
   private @Nullable Address address;
+
+  /** The state of a synchronous object between its clock's two release phases. */
+  private static final class Instant {
+    /** The events waiting at the last release. */
+    int releasedSize;
+
+    /** The instant to run, or last run. */
+    long number;
+
+    /** Counted down when the object can be released again. */
+    @Nullable CountDownLatch done;
+  }
+
+  /** The first node of an empty buffer: it carries no event. */
+  private static final class Stub extends Envelope {
+    @Override
+    boolean processable(Object servant) {
+      return false;
+    }
+
+    @Override
+    void process(Core<?> receiver) {
+      throw new IllegalStateException("the buffer's stub is never processed");
+    }
+  }
 
   Core(RuntimeImpl runtime, long id, S servant, ObjectConfig config) {
     this.runtime = runtime;
@@ -94,15 +113,16 @@ final class Core<S> implements ActiveObject<S> {
     this.config = config;
     this.locked =
         config.overflow() instanceof OverflowPolicy.DropOldest ? new LockedBuffer() : null;
-    this.takenBatch = Math.max(1, Math.min(64, config.capacity() >> 6));
-    Envelope stub = new Requests.Action<S>(s -> {}, null);
+    this.instant = config.mode() == Mode.SYNCHRONOUS ? new Instant() : null;
+    Envelope stub = new Stub();
     this.head = stub;
     this.tail = stub;
   }
 
   /** The instant a synchronous object is running or last ran; 0 before its first. */
   long currentInstant() {
-    return pendingInstant;
+    Instant i = instant;
+    return i == null ? 0 : i.number;
   }
 
   static @Nullable Core<?> current() {
@@ -363,17 +383,17 @@ final class Core<S> implements ActiveObject<S> {
 
   /** One activation, on a worker thread: the object holds {@link #SCHEDULED}. */
   void run() {
-    runner = Thread.currentThread();
     CURRENT.set(this);
     int processed = 0;
     boolean more = false;
-    CountDownLatch instant = null;
+    CountDownLatch released = null;
     try {
       if ((state & STOPPED) != 0) {
         cancelQueued();
       } else if (config.mode() == Mode.SYNCHRONOUS) {
-        instant = instantDone;
-        instantDone = null;
+        Instant i = java.util.Objects.requireNonNull(instant);
+        released = i.done;
+        i.done = null;
         processed = runInstant();
       } else {
         while (processed < BATCH) {
@@ -389,7 +409,6 @@ final class Core<S> implements ActiveObject<S> {
     } finally {
       returnTaken();
       CURRENT.remove();
-      runner = null;
       runtime.countProcessed(processed);
       if (more) {
         runtime.dispatcher().requeue(this); // fairness: the back of the shared queue
@@ -398,8 +417,8 @@ final class Core<S> implements ActiveObject<S> {
         STATE.getAndBitwiseAnd(this, ~SCHEDULED);
       }
       // The instant ends only once the object can be released again.
-      if (instant != null) {
-        instant.countDown();
+      if (released != null) {
+        released.countDown();
       }
     }
     if (!more && needsActivation()) {
@@ -422,11 +441,15 @@ final class Core<S> implements ActiveObject<S> {
 
   /**
    * Counts an event taken out of the buffer. Places go back to the senders in batches of {@link
-   * #takenBatch} (at most 1/64 of the capacity, 1 for buffers under 128): one contended atomic per
-   * batch rather than per event. Every batch is returned before the object parks or goes idle.
+   * #takenBatch()} (at most 1/64 of the capacity, 1 for buffers under 128): one contended atomic
+   * per batch rather than per event. Every batch is returned before the object parks or goes idle.
    */
+  private int takenBatch() {
+    return Math.max(1, Math.min(64, config.capacity() >> 6));
+  }
+
   private void taken() {
-    if (locked == null && ++taken >= takenBatch) {
+    if (locked == null && ++taken >= takenBatch()) {
       returnTaken();
     }
   }
@@ -640,7 +663,7 @@ final class Core<S> implements ActiveObject<S> {
     if (lb != null) {
       lb.markRelease();
     } else {
-      releasedSize = size;
+      java.util.Objects.requireNonNull(instant).releasedSize = size;
     }
   }
 
@@ -652,8 +675,9 @@ final class Core<S> implements ActiveObject<S> {
         return false;
       }
       if (STATE.compareAndSet(this, 0, SCHEDULED)) {
-        pendingInstant = instant;
-        instantDone = done;
+        Instant i = java.util.Objects.requireNonNull(this.instant);
+        i.number = instant;
+        i.done = done;
         runtime.dispatcher().schedule(this);
         return true;
       }
@@ -697,7 +721,7 @@ final class Core<S> implements ActiveObject<S> {
       }
       deferredHead = null;
       deferredTail = null;
-      int fresh = releasedSize - deferredCount;
+      int fresh = java.util.Objects.requireNonNull(instant).releasedSize - deferredCount;
       deferredCount = 0;
       for (int i = 0; i < fresh; i++) {
         Envelope e = pollInbox();
@@ -711,7 +735,7 @@ final class Core<S> implements ActiveObject<S> {
     int processed = processInstant(batch, lb);
     if (servant instanceof ReactiveCycle rc) {
       try {
-        rc.onCycle(pendingInstant);
+        rc.onCycle(java.util.Objects.requireNonNull(instant).number);
       } catch (Throwable t) {
         ActiveRuntimeErrors.throwIfFatal(t);
         runtime.reportFailure(this, null, t);
