@@ -28,7 +28,7 @@ import org.jspecify.annotations.Nullable;
  * idles (re-checking the buffer after clearing the flag so no wake-up is lost). A synchronous
  * object is scheduled only by its clock, once per instant.
  */
-final class Core<S> implements ActiveObject<S> {
+final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
   static final int SCHEDULED = 1;
   static final int STOPPED = 2;
   static final int BATCH = 256;

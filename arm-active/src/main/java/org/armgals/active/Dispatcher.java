@@ -57,7 +57,7 @@ final class Dispatcher {
 
   private final String name;
   private final int parallelism;
-  private final ConcurrentLinkedQueue<Core<?>> runQueue = new ConcurrentLinkedQueue<>();
+  private final RunQueue runQueue = new RunQueue();
   private final ConcurrentLinkedQueue<Worker> idle = new ConcurrentLinkedQueue<>();
   private final Set<Worker> workers = ConcurrentHashMap.newKeySet();
   private volatile Worker[] snapshot = new Worker[0];
