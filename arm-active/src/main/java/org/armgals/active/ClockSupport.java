@@ -50,13 +50,18 @@ final class ClockSupport {
       }
     }
     boolean interrupted = false;
-    for (; ; ) {
-      try {
-        done.await();
-        break;
-      } catch (InterruptedException e) {
-        interrupted = true;
+    Dispatcher.beforeBlock(); // stepped from an asynchronous object: keep the workers going
+    try {
+      for (; ; ) {
+        try {
+          done.await();
+          break;
+        } catch (InterruptedException e) {
+          interrupted = true;
+        }
       }
+    } finally {
+      Dispatcher.afterBlock();
     }
     if (interrupted) {
       Thread.currentThread().interrupt();

@@ -396,7 +396,7 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
         i.done = null;
         processed = runInstant();
       } else {
-        while (processed < BATCH) {
+        while (processed < BATCH && (state & STOPPED) == 0) {
           Envelope e = takeProcessable();
           if (e == null) {
             break;

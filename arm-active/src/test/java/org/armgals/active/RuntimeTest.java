@@ -168,6 +168,41 @@ class RuntimeTest {
   }
 
   @Test
+  void anObjectStoppedByItsOwnEventDiscardsTheRestOfItsBuffer() {
+    try (ActiveRuntime rt = ActiveRuntime.builder().workers(1).jmx(false).build()) {
+      ActiveObject<Cell> cell = rt.spawn(new Cell());
+      CountDownLatch queued = new CountDownLatch(1);
+      cell.send(
+          c -> {
+            queued.await();
+            ActiveContext.current().orElseThrow().stop();
+          });
+      List<FutureValue<Integer>> after = new ArrayList<>();
+      for (int i = 0; i < 10; i++) {
+        after.add(cell.call(c -> ++c.value));
+      }
+      queued.countDown();
+      for (FutureValue<Integer> f : after) {
+        assertThatThrownBy(() -> f.getValue(Duration.ofSeconds(10)))
+            .isInstanceOf(ObjectStoppedException.class);
+      }
+    }
+  }
+
+  @Test
+  void aManualClockSteppedFromAnAsynchronousObjectDoesNotStarveTheWorkers() {
+    try (ActiveRuntime rt = ActiveRuntime.builder().workers(1).jmx(false).build();
+        ManualClock clock = Clock.manual(Duration.ofMillis(1))) {
+      AtomicInteger cycles = new AtomicInteger();
+      rt.spawn(
+          (ReactiveCycle) instant -> cycles.incrementAndGet(), ObjectConfig.synchronous(clock));
+      ActiveObject<Cell> driver = rt.spawn(new Cell());
+      driver.signal(c -> clock.step(5)).touch(Duration.ofSeconds(10));
+      assertThat(cycles.get()).isEqualTo(5);
+    }
+  }
+
+  @Test
   void badArgumentsAreRefusedNamingTheValue() {
     assertThatThrownBy(() -> ActiveRuntime.builder().workers(0))
         .isInstanceOf(IllegalArgumentException.class)
