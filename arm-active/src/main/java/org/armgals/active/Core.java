@@ -68,6 +68,11 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
   private @Nullable Envelope deferredTail;
   private int deferredCount;
   private boolean dirty;
+
+  /** The envelope whose guard threw, and what it threw: it fails instead of running. */
+  private @Nullable Envelope guardFailed;
+
+  private @Nullable Throwable guardError;
   private int taken;
 
   /** Written by this object's own thread only: numbers what it sends. */
@@ -472,6 +477,12 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
   private void processOne(Envelope e) {
     taken();
     try {
+      if (guardFailed == e) {
+        Throwable t = java.util.Objects.requireNonNull(guardError);
+        guardFailed = null;
+        guardError = null;
+        throw new IllegalStateException("the guard of " + e + " threw " + t, t);
+      }
       e.process(this);
     } catch (Throwable t) {
       ActiveRuntimeErrors.throwIfFatal(t);
@@ -519,7 +530,9 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
       return e.processable(servant);
     } catch (Throwable t) {
       ActiveRuntimeErrors.throwIfFatal(t);
-      // A guard that throws makes its event fail rather than block the buffer.
+      // A guard that throws makes its event fail (without running) rather than block the buffer.
+      guardFailed = e;
+      guardError = t;
       return true;
     }
   }
@@ -636,7 +649,8 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
         java.util.concurrent.locks.LockSupport.parkNanos(this, remaining);
         if (Thread.interrupted()) {
           me.interrupt();
-          return false;
+          throw new ActiveException(
+              "interrupted while waiting for room in the buffer of " + address());
         }
       }
     } finally {

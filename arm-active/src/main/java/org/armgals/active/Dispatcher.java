@@ -91,6 +91,10 @@ final class Dispatcher {
    * woken by another runs on the same core, with its data still in cache.
    */
   void schedule(Core<?> core) {
+    if (terminated) {
+      core.run(); // only stopped objects get here: the activation discards their events
+      return;
+    }
     Worker w = CURRENT_WORKER.get();
     if (w != null && w.dispatcher == this) {
       Core<?> displaced = (Core<?>) NEXT.getAndSet(w, core);
@@ -105,6 +109,10 @@ final class Dispatcher {
 
   /** Queues an object at the back of the shared queue (an object that used up its batch). */
   void requeue(Core<?> core) {
+    if (terminated) {
+      core.run();
+      return;
+    }
     runQueue.offer(core);
     wakeIfNoneSpinning();
   }
@@ -331,11 +339,32 @@ final class Dispatcher {
     }
   }
 
-  /** Stops every worker once it is done with its activation. */
-  void terminate() {
+  /**
+   * Stops every worker once it is done with its activation, waits for them until {@code deadline},
+   * then runs what is still queued on the calling thread: objects are all stopped by then, so their
+   * activations only discard events and fail futures. A send that races the shutdown finds {@link
+   * #terminated} set and is handled the same way by its own thread.
+   */
+  void terminate(long deadline) {
     terminated = true;
-    for (Worker w : workers) {
-      LockSupport.unpark(w.thread);
+    for (Worker w : snapshot) {
+      Thread t = w.thread;
+      LockSupport.unpark(t);
+    }
+    for (Worker w : snapshot) {
+      Thread t = w.thread;
+      long remaining = deadline - runtime.timeSource().nanoTime();
+      if (t != null && t != Thread.currentThread() && remaining > 0) {
+        try {
+          t.join(java.time.Duration.ofNanos(remaining));
+        } catch (InterruptedException e) {
+          Thread.currentThread().interrupt();
+          break;
+        }
+      }
+    }
+    for (Core<?> c = runQueue.poll(); c != null; c = runQueue.poll()) {
+      c.run();
     }
   }
 }

@@ -178,8 +178,11 @@ final class Requests {
     }
 
     @Override
-    void process(Core<?> receiver) {
+    void process(Core<?> receiver) throws Exception {
       future.arrive(value, failure, neverRan);
+      if (receiver.servant() instanceof EventProcessor p) {
+        p.process(event());
+      }
     }
 
     @Override

@@ -202,14 +202,14 @@ final class RuntimeImpl implements ActiveRuntime {
     long deadline = timeSource.nanoTime() + timeout.toNanos();
     boolean clean = true;
     if (mode == ShutdownMode.DRAIN) {
-      clean = dispatcher.awaitQuiet(deadline);
+      clean = dispatcher.awaitQuiet(deadline) && stats().queuedEvents() == 0;
     }
     objects.forEach(Core::stop);
     if (mode == ShutdownMode.CANCEL) {
       dispatcher.interruptRunning();
     }
     clean &= dispatcher.awaitQuiet(deadline);
-    dispatcher.terminate();
+    dispatcher.terminate(deadline);
     if (transport != null) {
       transport.detach(name);
     }

@@ -98,7 +98,7 @@ final class SyncFuture<T extends @Nullable Object>
 
   @Override
   public void touch(Duration timeout) {
-    getValue();
+    getValue(timeout);
   }
 
   @Override
@@ -117,9 +117,13 @@ final class SyncFuture<T extends @Nullable Object>
     return (T) value;
   }
 
-  /** Never waits: the same as {@link #getValue()}. */
+  /** Never waits: the same as {@link #getValue()}, once the timeout is checked. */
   @Override
   public T getValue(Duration timeout) {
+    java.util.Objects.requireNonNull(timeout, "timeout");
+    if (timeout.isNegative()) {
+      throw new IllegalArgumentException("timeout must be >= 0, was " + timeout);
+    }
     return getValue();
   }
 

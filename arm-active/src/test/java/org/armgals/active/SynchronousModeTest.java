@@ -173,6 +173,44 @@ class SynchronousModeTest {
     }
   }
 
+  /** A reactive servant that also takes events: it hears its replies as FutureEvents. */
+  static final class Listener implements EventProcessor, ReactiveCycle {
+    final ActiveRef<Oracle> oracle;
+    final List<String> heard = new ArrayList<>();
+
+    Listener(ActiveRef<Oracle> oracle) {
+      this.oracle = oracle;
+    }
+
+    @Override
+    public void process(Event event) {
+      if (event instanceof FutureEvent f) {
+        heard.add("reply " + f.value() + " from " + f.sender());
+      }
+    }
+
+    @Override
+    public void onCycle(long instant) {
+      if (instant == 1) {
+        FutureValue<Integer> f = oracle.call(o -> o.answer);
+        assertThatThrownBy(() -> f.getValue(Duration.ofSeconds(-1)))
+            .isInstanceOf(IllegalArgumentException.class);
+      }
+    }
+  }
+
+  @Test
+  void repliesReachAnEventProcessorServantAsFutureEvents() {
+    try (ManualClock clock = Clock.manual(Duration.ofMillis(1));
+        ActiveRuntime rt = ActiveRuntime.builder().jmx(false).build()) {
+      ActiveObject<Oracle> oracle = rt.spawn(new Oracle(), ObjectConfig.synchronous(clock));
+      Listener listener = new Listener(oracle);
+      rt.spawn(listener, ObjectConfig.synchronous(clock));
+      clock.step(3);
+      assertThat(listener.heard).containsExactly("reply 42 from " + oracle.address());
+    }
+  }
+
   @Test
   void aReactiveObjectCannotWaitByNecessity() {
     try (ManualClock clock = Clock.manual(Duration.ofMillis(1));
