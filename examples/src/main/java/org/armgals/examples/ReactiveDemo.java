@@ -99,6 +99,7 @@ final class ReactiveDemo {
       }
     }
 
+    // tag::sync-future[]
     @Override
     public void onCycle(long instant) {
       for (Reading r : readings) {
@@ -120,6 +121,7 @@ final class ReactiveDemo {
         }
       }
     }
+    // end::sync-future[]
   }
 
   /** What part 3 printed, one entry per instant. */

@@ -16,9 +16,10 @@ final class Basics {
 
   static Seen run() throws Exception {
     // tag::spawn[]
-    try (ActiveRuntime runtime = ActiveRuntime.builder().name("bank").build()) {
-      ActiveObject<Account> account = runtime.spawn(new Account());
-      // end::spawn[]
+    ActiveRuntime runtime = ActiveRuntime.builder().name("bank").build();
+    ActiveObject<Account> account = runtime.spawn(new Account()); // asynchronous, default buffer
+    // end::spawn[]
+    try {
 
       // tag::send-call[]
       account.send(a -> a.deposit(100)); // one-way: queued, returns at once
@@ -43,6 +44,8 @@ final class Basics {
       long fromStage = stage.toCompletableFuture().get();
       // end::stage[]
       return new Seen(now, left.getValue(), fromStage);
+    } finally {
+      runtime.close();
     }
   }
 }

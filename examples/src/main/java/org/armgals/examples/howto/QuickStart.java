@@ -40,13 +40,8 @@ public final class QuickStart {
 
   // end::servant[]
 
+  // tag::main[]
   public static void main(String[] args) {
-    run();
-  }
-
-  /** Runs the example; returns what it printed last. */
-  static long run() {
-    // tag::main[]
     try (ActiveRuntime runtime = ActiveRuntime.create()) {
       ActiveObject<Counter> counter = runtime.spawn(new Counter());
 
@@ -56,10 +51,8 @@ public final class QuickStart {
 
       Tally tally = counter.proxy(Tally.class); // the same object, behind its interface
       tally.add(40);
-      long total = tally.total().getValue(Duration.ofSeconds(5));
-      System.out.println("total = " + total); // 42
-      // end::main[]
-      return total;
+      System.out.println("total = " + tally.total().getValue(Duration.ofSeconds(5))); // 42
     }
   }
+  // end::main[]
 }

@@ -2,6 +2,9 @@ package org.armgals.examples.howto;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
 import org.armgals.active.OverflowPolicy;
 import org.junit.jupiter.api.Disabled;
 import org.junit.jupiter.api.Test;
@@ -11,7 +14,15 @@ class HowtoTest {
 
   @Test
   void quickStartCountsToFortyTwo() {
-    assertThat(QuickStart.run()).isEqualTo(42);
+    PrintStream stdout = System.out;
+    ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+    System.setOut(new PrintStream(bytes, true, StandardCharsets.UTF_8));
+    try {
+      QuickStart.main(new String[0]);
+    } finally {
+      System.setOut(stdout);
+    }
+    assertThat(bytes.toString(StandardCharsets.UTF_8).lines()).contains("count = 2", "total = 42");
   }
 
   @Test
