@@ -68,6 +68,7 @@ final class Core<S> implements ActiveObject<S> {
   private @Nullable Envelope deferredTail;
   private int deferredCount;
   private boolean dirty;
+  private int taken;
 
   /** Written by this object's own thread only: numbers what it sends. */
   private long sendSeq;
@@ -75,15 +76,35 @@ final class Core<S> implements ActiveObject<S> {
   /** The future this object's thread waits on, for wait-for cycle detection. */
   volatile @Nullable ValueFuture<?> waitingFor;
 
-  /** The thread running an activation, for a cancelling shutdown. */
-  volatile @Nullable Thread runner;
+  /** Synchronous mode only: what the clock's release fixed. Null for asynchronous objects. */
+  private final @Nullable Instant instant;
 
-  /** Synchronous mode: the events waiting at the last release, and the instant to run. */
-  private int releasedSize;
-
-  private long pendingInstant;
-  private @Nullable CountDownLatch instantDone;
   private @Nullable Address address;
+
+  /** The state of a synchronous object between its clock's two release phases. */
+  private static final class Instant {
+    /** The events waiting at the last release. */
+    int releasedSize;
+
+    /** The instant to run, or last run. */
+    long number;
+
+    /** Counted down when the object can be released again. */
+    @Nullable CountDownLatch done;
+  }
+
+  /** The first node of an empty buffer: it carries no event. */
+  private static final class Stub extends Envelope {
+    @Override
+    boolean processable(Object servant) {
+      return false;
+    }
+
+    @Override
+    void process(Core<?> receiver) {
+      throw new IllegalStateException("the buffer's stub is never processed");
+    }
+  }
 
   Core(RuntimeImpl runtime, long id, S servant, ObjectConfig config) {
     this.runtime = runtime;
@@ -92,14 +113,16 @@ final class Core<S> implements ActiveObject<S> {
     this.config = config;
     this.locked =
         config.overflow() instanceof OverflowPolicy.DropOldest ? new LockedBuffer() : null;
-    Envelope stub = new Requests.Action<S>(s -> {}, null);
+    this.instant = config.mode() == Mode.SYNCHRONOUS ? new Instant() : null;
+    Envelope stub = new Stub();
     this.head = stub;
     this.tail = stub;
   }
 
   /** The instant a synchronous object is running or last ran; 0 before its first. */
   long currentInstant() {
-    return pendingInstant;
+    Instant i = instant;
+    return i == null ? 0 : i.number;
   }
 
   static @Nullable Core<?> current() {
@@ -299,12 +322,13 @@ final class Core<S> implements ActiveObject<S> {
     long deadline = 0;
     boolean waited = false;
     for (; ; ) {
-      int s = size;
-      if (s < capacity) {
-        if (SIZE.compareAndSet(this, s, s + 1)) {
-          return true;
-        }
-        continue;
+      if ((int) SIZE.getAndAdd(this, 1) < capacity) {
+        return true;
+      }
+      // Over: give the place back. Another sender may have seen the transient excess and be
+      // about to park; wake it if there is room after all.
+      if ((int) SIZE.getAndAdd(this, -1) - 1 < capacity) {
+        roomMade();
       }
       switch (config.overflow()) {
         case OverflowPolicy.Reject r -> {
@@ -359,14 +383,17 @@ final class Core<S> implements ActiveObject<S> {
 
   /** One activation, on a worker thread: the object holds {@link #SCHEDULED}. */
   void run() {
-    runner = Thread.currentThread();
     CURRENT.set(this);
     int processed = 0;
     boolean more = false;
+    CountDownLatch released = null;
     try {
       if ((state & STOPPED) != 0) {
         cancelQueued();
       } else if (config.mode() == Mode.SYNCHRONOUS) {
+        Instant i = java.util.Objects.requireNonNull(instant);
+        released = i.done;
+        i.done = null;
         processed = runInstant();
       } else {
         while (processed < BATCH) {
@@ -380,16 +407,21 @@ final class Core<S> implements ActiveObject<S> {
         more = processed == BATCH;
       }
     } finally {
+      returnTaken();
       CURRENT.remove();
-      runner = null;
       runtime.countProcessed(processed);
+      if (more) {
+        runtime.dispatcher().requeue(this); // fairness: the back of the shared queue
+      } else {
+        roomMade();
+        STATE.getAndBitwiseAnd(this, ~SCHEDULED);
+      }
+      // The instant ends only once the object can be released again.
+      if (released != null) {
+        released.countDown();
+      }
     }
-    if (more) {
-      runtime.dispatcher().schedule(this);
-      return;
-    }
-    STATE.getAndBitwiseAnd(this, ~SCHEDULED);
-    if (needsActivation()) {
+    if (!more && needsActivation()) {
       trySchedule();
     }
   }
@@ -407,11 +439,38 @@ final class Core<S> implements ActiveObject<S> {
     return lb != null ? lb.hasUnseen() : tail != head;
   }
 
-  private void processOne(Envelope e) {
-    if (locked == null) {
-      SIZE.getAndAdd(this, -1);
+  /**
+   * Counts an event taken out of the buffer. Places go back to the senders in batches of {@link
+   * #takenBatch()} (at most 1/64 of the capacity, 1 for buffers under 128): one contended atomic
+   * per batch rather than per event. Every batch is returned before the object parks or goes idle.
+   */
+  private int takenBatch() {
+    return Math.max(1, Math.min(64, config.capacity() >> 6));
+  }
+
+  private void taken() {
+    if (locked == null && ++taken >= takenBatch()) {
+      returnTaken();
+    }
+  }
+
+  /** Returns the places of the events taken so far. Consumer only. */
+  void returnTaken() {
+    int t = taken;
+    if (t == 0) {
+      return;
+    }
+    taken = 0;
+    int left = (int) SIZE.getAndAdd(this, -t) - t;
+    // Wake blocked senders at half capacity, not for every place: a park and an unpark per event
+    // would make a full buffer far slower than a half-empty one.
+    if (left <= config.capacity() >> 1) {
       roomMade();
     }
+  }
+
+  private void processOne(Envelope e) {
+    taken();
     try {
       e.process(this);
     } catch (Throwable t) {
@@ -553,6 +612,10 @@ final class Core<S> implements ActiveObject<S> {
 
   /** Parks the sender until there may be room, the object stopped, or the deadline passed. */
   private boolean awaitRoom(long deadline) {
+    Core<?> sender = CURRENT.get();
+    if (sender != null) {
+      sender.returnTaken();
+    }
     var q = blocked;
     if (q == null) {
       BLOCKED.compareAndSet(this, null, new java.util.concurrent.ConcurrentLinkedQueue<Thread>());
@@ -600,7 +663,7 @@ final class Core<S> implements ActiveObject<S> {
     if (lb != null) {
       lb.markRelease();
     } else {
-      releasedSize = size;
+      java.util.Objects.requireNonNull(instant).releasedSize = size;
     }
   }
 
@@ -612,8 +675,9 @@ final class Core<S> implements ActiveObject<S> {
         return false;
       }
       if (STATE.compareAndSet(this, 0, SCHEDULED)) {
-        pendingInstant = instant;
-        instantDone = done;
+        Instant i = java.util.Objects.requireNonNull(this.instant);
+        i.number = instant;
+        i.done = done;
         runtime.dispatcher().schedule(this);
         return true;
       }
@@ -647,44 +711,34 @@ final class Core<S> implements ActiveObject<S> {
 
   /** Takes every event waiting at the release, in a deterministic order, then the cycle. */
   private int runInstant() {
-    long instant = pendingInstant;
-    CountDownLatch done = instantDone;
-    instantDone = null;
-    int processed = 0;
-    try {
-      List<Envelope> batch = new ArrayList<>();
-      LockedBuffer lb = locked;
-      if (lb != null) {
-        lb.takeReleased(batch);
-      } else {
-        for (Envelope d = deferredHead; d != null; d = d.deferredNext) {
-          batch.add(d);
-        }
-        deferredHead = null;
-        deferredTail = null;
-        int fresh = releasedSize - deferredCount;
-        deferredCount = 0;
-        for (int i = 0; i < fresh; i++) {
-          Envelope e = pollInbox();
-          if (e == null) {
-            break;
-          }
-          batch.add(e);
-        }
+    List<Envelope> batch = new ArrayList<>();
+    LockedBuffer lb = locked;
+    if (lb != null) {
+      lb.takeReleased(batch);
+    } else {
+      for (Envelope d = deferredHead; d != null; d = d.deferredNext) {
+        batch.add(d);
       }
-      batch.sort(INSTANT_ORDER);
-      processed = processInstant(batch, lb);
-      if (servant instanceof ReactiveCycle rc) {
-        try {
-          rc.onCycle(instant);
-        } catch (Throwable t) {
-          ActiveRuntimeErrors.throwIfFatal(t);
-          runtime.reportFailure(this, null, t);
+      deferredHead = null;
+      deferredTail = null;
+      int fresh = java.util.Objects.requireNonNull(instant).releasedSize - deferredCount;
+      deferredCount = 0;
+      for (int i = 0; i < fresh; i++) {
+        Envelope e = pollInbox();
+        if (e == null) {
+          break;
         }
+        batch.add(e);
       }
-    } finally {
-      if (done != null) {
-        done.countDown();
+    }
+    batch.sort(INSTANT_ORDER);
+    int processed = processInstant(batch, lb);
+    if (servant instanceof ReactiveCycle rc) {
+      try {
+        rc.onCycle(java.util.Objects.requireNonNull(instant).number);
+      } catch (Throwable t) {
+        ActiveRuntimeErrors.throwIfFatal(t);
+        runtime.reportFailure(this, null, t);
       }
     }
     return processed;
