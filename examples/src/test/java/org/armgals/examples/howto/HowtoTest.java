@@ -6,7 +6,6 @@ import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import org.armgals.active.OverflowPolicy;
-import org.junit.jupiter.api.Disabled;
 import org.junit.jupiter.api.Test;
 
 /** The snippets quoted in README.md and docs/ do what the text around them says. */
@@ -57,9 +56,6 @@ class HowtoTest {
   }
 
   @Test
-  @Disabled(
-      "arm-active bug: ManualClock.step() can skip an object whose previous activation has not"
-          + " yet cleared its SCHEDULED flag; see DemoTest. Enable once fixed.")
   void thermostatReactsAtTheInstantThatTakesTheReading() {
     assertThat(Reactive.run()).containsExactly("instant 1: heater on", "instant 2: heater off");
   }
