@@ -26,7 +26,7 @@ class SchedulingModelCheckTest {
   void everyEventSentIsProcessedExactlyOnceInSenderOrderWithNoLostWakeUp() {
     new ModelCheckingOptions()
         .iterations(10)
-        .invocationsPerIteration(200)
+        .invocationsPerIteration(150)
         .threads(3)
         .actorsPerThread(2)
         .actorsBefore(0)
