@@ -38,8 +38,8 @@ class CapacityAccountingModelCheckTest {
 
   private static void check(Class<? extends FullBuffer> scenario) {
     new ModelCheckingOptions()
-        .iterations(5)
-        .invocationsPerIteration(100)
+        .iterations(3)
+        .invocationsPerIteration(60)
         .threads(2)
         .actorsPerThread(3)
         .actorsBefore(0)

@@ -1,23 +1,19 @@
 package org.armgals.active;
 
+import java.util.ArrayList;
 import java.util.Collection;
-import java.util.HashMap;
-import java.util.HashSet;
 import java.util.List;
-import java.util.Map;
-import java.util.Set;
 
 /**
  * What the stress tests check about a run: each event sent ends in exactly one of processed,
  * dropped or rejected, and the processed events of each sender come in the order it sent them.
  *
- * <p>Plain Java, no AssertJ: it also runs inside Lincheck's model checker, which calls {@code
- * equals} on objects that AssertJ's assertions refuse it to.
+ * <p>Plain Java over arrays, no AssertJ and no hashing: it also runs inside Lincheck's model
+ * checker, which follows every call it makes (and calls {@code equals} on objects that AssertJ's
+ * assertions refuse it to).
  */
 final class Ledger {
   private Ledger() {}
-
-  private record Id(int thread, int seq) {}
 
   /**
    * Checks that every event {@code 1 .. sent[t]} of every thread {@code t} is in exactly one of
@@ -28,26 +24,25 @@ final class Ledger {
    */
   static void assertEachSentEventAccountedForOnce(
       int[] sent, List<Tagged> processed, Collection<Tagged> dropped, Collection<Tagged> rejected) {
-    Map<Id, String> fate = new HashMap<>();
+    String[][] fate = new String[sent.length][];
+    for (int thread = 0; thread < sent.length; thread++) {
+      fate[thread] = new String[sent[thread] + 1];
+    }
     record(fate, processed, "processed");
     record(fate, dropped, "dropped");
     record(fate, rejected, "rejected");
-    Set<Id> expected = new HashSet<>();
+    List<String> lost = new ArrayList<>();
     for (int thread = 0; thread < sent.length; thread++) {
       for (int seq = 1; seq <= sent[thread]; seq++) {
-        expected.add(new Id(thread, seq));
+        if (fate[thread][seq] == null) {
+          lost.add(thread + "/" + seq);
+        }
       }
     }
-    if (!fate.keySet().equals(expected)) {
-      Set<Id> lost = new HashSet<>(expected);
-      lost.removeAll(fate.keySet());
-      Set<Id> unknown = new HashSet<>(fate.keySet());
-      unknown.removeAll(expected);
+    if (!lost.isEmpty()) {
       throw new AssertionError(
-          "events sent but neither processed, dropped nor rejected: "
+          "events (thread/seq) sent but neither processed, dropped nor rejected: "
               + lost
-              + "; events never sent: "
-              + unknown
               + " (processed "
               + processed
               + ", dropped "
@@ -56,31 +51,35 @@ final class Ledger {
               + rejected
               + ")");
     }
-    assertInSenderOrder(processed);
+    assertInSenderOrder(sent.length, processed);
   }
 
   /**
-   * Checks that the events of each thread come in increasing {@code seq}.
+   * Checks that the events of each of {@code threads} threads come in increasing {@code seq}.
    *
    * @throws AssertionError naming the thread and the processing order
    */
-  static void assertInSenderOrder(List<Tagged> processed) {
-    Map<Integer, Integer> last = new HashMap<>();
+  static void assertInSenderOrder(int threads, List<Tagged> processed) {
+    int[] last = new int[threads];
     for (Tagged t : processed) {
-      Integer before = last.put(t.thread(), t.seq());
-      if (before != null && t.seq() <= before) {
+      if (t.seq() <= last[t.thread()]) {
         throw new AssertionError(
             "thread " + t.thread() + "'s events processed out of order: " + processed);
       }
+      last[t.thread()] = t.seq();
     }
   }
 
-  private static void record(Map<Id, String> fate, Collection<Tagged> events, String what) {
+  private static void record(String[][] fate, Collection<Tagged> events, String what) {
     for (Tagged t : events) {
-      String earlier = fate.put(new Id(t.thread(), t.seq()), what);
+      if (t.thread() >= fate.length || t.seq() < 1 || t.seq() >= fate[t.thread()].length) {
+        throw new AssertionError("event " + t + " is " + what + " but was never sent");
+      }
+      String earlier = fate[t.thread()][t.seq()];
       if (earlier != null) {
         throw new AssertionError("event " + t + " is " + what + " but was already " + earlier);
       }
+      fate[t.thread()][t.seq()] = what;
     }
   }
 }

@@ -25,8 +25,8 @@ class SchedulingModelCheckTest {
   @Test
   void everyEventSentIsProcessedExactlyOnceInSenderOrderWithNoLostWakeUp() {
     new ModelCheckingOptions()
-        .iterations(10)
-        .invocationsPerIteration(150)
+        .iterations(6)
+        .invocationsPerIteration(100)
         .threads(3)
         .actorsPerThread(2)
         .actorsBefore(0)
