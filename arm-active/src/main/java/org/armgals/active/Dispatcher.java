@@ -281,6 +281,33 @@ final class Dispatcher {
     idle.remove(w);
   }
 
+  // ---------------------------------------------------------------- invoker (STYLE rule 4)
+
+  /**
+   * One worker step on the calling thread: runs one activation of the next queued object. For a
+   * dispatcher with no workers, driven by hand (tests, model checking).
+   *
+   * @return false if no object was queued
+   */
+  boolean runOne() {
+    for (; ; ) {
+      Core<?> c = runQueue.poll();
+      if (c != null) {
+        c.run();
+        return true;
+      }
+      if (runQueue.isEmpty()) {
+        return false;
+      }
+      Thread.onSpinWait(); // another thread is polling
+    }
+  }
+
+  /** How many worker threads are inside their loop. */
+  int liveWorkers() {
+    return workers.size();
+  }
+
   // ---------------------------------------------------------------- shutdown
 
   /** Whether no object is queued to run and no worker runs an activation. */

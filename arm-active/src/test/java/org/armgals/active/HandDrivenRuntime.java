@@ -23,8 +23,6 @@ final class HandDrivenRuntime {
           null,
           TimeSource.system(),
           false);
-  private final ConcurrentLinkedQueue<Core<?>> runQueue =
-      DispatcherProbe.runQueue(runtime.dispatcher());
 
   /** A new asynchronous object around {@code servant}; it runs only when someone runs it. */
   <S> Core<S> spawn(S servant, ObjectConfig config) {
@@ -33,12 +31,7 @@ final class HandDrivenRuntime {
 
   /** One worker step: runs one activation of the next scheduled object; false if none. */
   boolean runOne() {
-    Core<?> c = runQueue.poll();
-    if (c == null) {
-      return false;
-    }
-    c.run();
-    return true;
+    return runtime.dispatcher().runOne();
   }
 
   /** Runs activations until no object is scheduled. */
