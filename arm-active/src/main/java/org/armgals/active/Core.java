@@ -33,6 +33,9 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
   static final int STOPPED = 2;
   static final int BATCH = 256;
 
+  /** How long, in spins, an activation waits for more events before going idle. */
+  static final int LINGER_SPINS = 200;
+
   private static final VarHandle TAIL;
   private static final VarHandle SIZE;
   private static final VarHandle STATE;
@@ -401,10 +404,15 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
         i.done = null;
         processed = runInstant();
       } else {
+        int linger = LINGER_SPINS;
         while (processed < BATCH && (state & STOPPED) == 0) {
           Envelope e = takeProcessable();
           if (e == null) {
-            break;
+            linger = lingerForEvents(linger);
+            if (linger < 0) {
+              break;
+            }
+            continue;
           }
           processOne(e);
           processed++;
@@ -429,6 +437,24 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
     if (!more && needsActivation()) {
       trySchedule();
     }
+  }
+
+  /**
+   * Out of events: waits a little for more before going idle, if no other object is waiting for a
+   * worker. A sender streaming to this object then costs no scheduling round trip per few events.
+   *
+   * @return the spins left, or -1 to go idle
+   */
+  private int lingerForEvents(int spins) {
+    LockedBuffer lb = locked;
+    while (spins > 0 && runtime.dispatcher().nothingWaiting()) {
+      spins--;
+      Thread.onSpinWait();
+      if (lb != null ? lb.hasUnseen() : tail != head) {
+        return spins;
+      }
+    }
+    return -1;
   }
 
   /** After an activation: is there something the idle object must still do? */

@@ -107,6 +107,18 @@ final class Dispatcher {
     requeue(core);
   }
 
+  /**
+   * Whether no other object waits for the calling worker: the shared queue is empty and the
+   * worker's own next slot too. A lingering object gives way to any waiting one.
+   */
+  boolean nothingWaiting() {
+    if (!runQueue.isEmpty()) {
+      return false;
+    }
+    Worker w = CURRENT_WORKER.get();
+    return w == null || w.next == null;
+  }
+
   /** Queues an object at the back of the shared queue (an object that used up its batch). */
   void requeue(Core<?> core) {
     if (terminated) {
