@@ -446,6 +446,7 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
    * @return the spins left, or -1 to go idle
    */
   private int lingerForEvents(int spins) {
+    returnTaken(); // while it lingers, the object's count of queued events is exact
     LockedBuffer lb = locked;
     while (spins > 0 && runtime.dispatcher().nothingWaiting()) {
       spins--;

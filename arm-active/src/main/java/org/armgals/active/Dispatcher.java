@@ -108,15 +108,16 @@ final class Dispatcher {
   }
 
   /**
-   * Whether no other object waits for the calling worker: the shared queue is empty and the
-   * worker's own next slot too. A lingering object gives way to any waiting one.
+   * Whether the calling thread is one of this dispatcher's workers and no other object waits for
+   * it: the shared queue is empty and the worker's own next slot too. A lingering object gives way
+   * to any waiting one; on a thread driving the dispatcher by hand it never lingers.
    */
   boolean nothingWaiting() {
     if (!runQueue.isEmpty()) {
       return false;
     }
     Worker w = CURRENT_WORKER.get();
-    return w == null || w.next == null;
+    return w != null && w.dispatcher == this && w.next == null;
   }
 
   /** Queues an object at the back of the shared queue (an object that used up its batch). */
