@@ -50,7 +50,11 @@ final class ClockSupport {
       }
     }
     boolean interrupted = false;
-    Dispatcher.beforeBlock(); // stepped from an asynchronous object: keep the workers going
+    Core<?> caller = Core.current();
+    if (caller != null) {
+      caller.returnTaken(); // stepped from an asynchronous object: its count stays exact
+    }
+    Dispatcher.beforeBlock(); // ...and the other workers keep going
     try {
       for (; ; ) {
         try {

@@ -73,9 +73,10 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
   private boolean dirty;
 
   /** The envelope whose guard threw, and what it threw: it fails instead of running. */
-  private @Nullable Envelope guardFailed;
+  private @Nullable GuardFailure guardFailure;
 
-  private @Nullable Throwable guardError;
+  private record GuardFailure(Envelope envelope, Throwable error) {}
+
   private int taken;
 
   /** Written by this object's own thread only: numbers what it sends. */
@@ -91,8 +92,8 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
 
   /** The state of a synchronous object between its clock's two release phases. */
   private static final class Instant {
-    /** The events waiting at the last release. */
-    int releasedSize;
+    /** The last event linked at the last release: the instant takes it and all before it. */
+    @Nullable Envelope releasedTail;
 
     /** The instant to run, or last run. */
     long number;
@@ -255,6 +256,7 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
     if (config.clock() instanceof ClockSupport.Owner owner) {
       owner.support().unregister(this);
     }
+    roomMade(); // senders blocked by a full buffer learn at once that the object is gone
     trySchedule();
   }
 
@@ -356,6 +358,10 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
             runtime.countRejected();
             throw new BufferFullException(
                 address(), capacity, "sender blocked for " + b.timeout() + " without room");
+          }
+          if ((state & STOPPED) != 0) {
+            runtime.countRejected();
+            throw new ObjectStoppedException(address());
           }
         }
         case OverflowPolicy.DropOldest d ->
@@ -504,11 +510,10 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
   private void processOne(Envelope e) {
     taken();
     try {
-      if (guardFailed == e) {
-        Throwable t = java.util.Objects.requireNonNull(guardError);
-        guardFailed = null;
-        guardError = null;
-        throw new IllegalStateException("the guard of " + e + " threw " + t, t);
+      GuardFailure g = guardFailure;
+      if (g != null && g.envelope() == e) {
+        guardFailure = null;
+        throw new IllegalStateException("the guard of " + e + " threw " + g.error(), g.error());
       }
       e.process(this);
     } catch (Throwable t) {
@@ -558,8 +563,7 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
     } catch (Throwable t) {
       ActiveRuntimeErrors.throwIfFatal(t);
       // A guard that throws makes its event fail (without running) rather than block the buffer.
-      guardFailed = e;
-      guardError = t;
+      guardFailure = new GuardFailure(e, t);
       return true;
     }
   }
@@ -676,6 +680,7 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
         java.util.concurrent.locks.LockSupport.parkNanos(this, remaining);
         if (Thread.interrupted()) {
           me.interrupt();
+          runtime.countRejected();
           throw new ActiveException(
               "interrupted while waiting for room in the buffer of " + address());
         }
@@ -704,7 +709,9 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
     if (lb != null) {
       lb.markRelease();
     } else {
-      java.util.Objects.requireNonNull(instant).releasedSize = size;
+      // The last node linked now: events whose place was reserved but that are not linked yet
+      // were sent at the same time as the release, and belong to the next instant.
+      java.util.Objects.requireNonNull(instant).releasedTail = tail;
     }
   }
 
@@ -734,7 +741,7 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
   private int retrySkipped(List<Envelope> skipped) {
     int processed = 0;
     boolean progress = true;
-    while (progress) {
+    while (progress && (state & STOPPED) == 0) {
       progress = false;
       for (int i = 0; i < skipped.size(); i++) {
         Envelope e = skipped.get(i);
@@ -762,19 +769,20 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
       }
       deferredHead = null;
       deferredTail = null;
-      int fresh = java.util.Objects.requireNonNull(instant).releasedSize - deferredCount;
       deferredCount = 0;
-      for (int i = 0; i < fresh; i++) {
-        Envelope e = pollInbox();
-        if (e == null) {
-          break;
+      Envelope last = java.util.Objects.requireNonNull(instant).releasedTail;
+      if (last != null && last != head) {
+        for (Envelope e = pollInbox(); e != null; e = pollInbox()) {
+          batch.add(e);
+          if (e == last) {
+            break;
+          }
         }
-        batch.add(e);
       }
     }
     batch.sort(INSTANT_ORDER);
     int processed = processInstant(batch, lb);
-    if (servant instanceof ReactiveCycle rc) {
+    if (servant instanceof ReactiveCycle rc && (state & STOPPED) == 0) {
       try {
         rc.onCycle(java.util.Objects.requireNonNull(instant).number);
       } catch (Throwable t) {
@@ -793,7 +801,13 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
   private int processInstant(List<Envelope> batch, @Nullable LockedBuffer lb) {
     int processed = 0;
     List<Envelope> skipped = new ArrayList<>();
-    for (Envelope e : batch) {
+    for (int i = 0; i < batch.size(); i++) {
+      Envelope e = batch.get(i);
+      if ((state & STOPPED) != 0) {
+        // Stopped by one of the instant's events: the rest is discarded with the buffer.
+        skipped.addAll(batch.subList(i, batch.size()));
+        break;
+      }
       if (!processableSafely(e)) {
         skipped.add(e);
         continue;

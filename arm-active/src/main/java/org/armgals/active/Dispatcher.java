@@ -201,6 +201,7 @@ final class Dispatcher {
 
   private void loop(Worker w) {
     CURRENT_WORKER.set(w);
+    boolean retired = false;
     try {
       while (!terminated) {
         w.running = true;
@@ -215,6 +216,7 @@ final class Dispatcher {
           w.running = false;
           signalIfDraining();
           if (retireIfSurplus()) {
+            retired = true;
             return;
           }
           parkIdle(w);
@@ -229,6 +231,11 @@ final class Dispatcher {
       }
     } finally {
       w.running = false;
+      if (!retired && !terminated) {
+        // A fatal error ended this worker (it was rethrown, not swallowed): replace it so the
+        // runtime keeps its parallelism.
+        startWorker();
+      }
       Core<?> n = (Core<?>) NEXT.getAndSet(w, null);
       if (n != null) {
         requeue(n);

@@ -85,6 +85,11 @@ final class RuntimeImpl implements ActiveRuntime {
       throw new IllegalStateException("runtime " + name + " is shut down; cannot spawn " + servant);
     }
     Core<S> core = objects.add(id -> new Core<>(this, id, servant, config));
+    if (phase.get() != RUNNING) {
+      // A shutdown began while this object was being added; it may have missed it.
+      core.stop();
+      throw new IllegalStateException("runtime " + name + " is shut down; cannot spawn " + servant);
+    }
     if (config.clock() instanceof ClockSupport.Owner owner) {
       clocks.add(owner.support());
       owner.support().register(core);

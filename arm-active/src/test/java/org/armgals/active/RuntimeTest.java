@@ -204,6 +204,19 @@ class RuntimeTest {
   }
 
   @Test
+  void aWorkerEndedByAFatalErrorIsReplaced() {
+    try (ActiveRuntime rt = ActiveRuntime.builder().workers(1).jmx(false).build()) {
+      ActiveObject<Cell> doomed = rt.spawn(new Cell());
+      doomed.send(
+          c -> {
+            throw new StackOverflowError("fatal, on purpose");
+          });
+      ActiveObject<Cell> other = rt.spawn(new Cell());
+      assertThat(other.call(c -> 7).getValue(Duration.ofSeconds(10))).isEqualTo(7);
+    }
+  }
+
+  @Test
   void badArgumentsAreRefusedNamingTheValue() {
     assertThatThrownBy(() -> ActiveRuntime.builder().workers(0))
         .isInstanceOf(IllegalArgumentException.class)

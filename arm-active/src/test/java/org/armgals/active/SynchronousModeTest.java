@@ -212,6 +212,28 @@ class SynchronousModeTest {
   }
 
   @Test
+  void aReactiveObjectStoppedByAnEventTakesNoMoreEventsAndNoCycle() {
+    try (ManualClock clock = Clock.manual(Duration.ofMillis(1));
+        ActiveRuntime rt = ActiveRuntime.builder().jmx(false).build()) {
+      List<String> log = new ArrayList<>();
+      final class Quitter implements ReactiveCycle {
+        @Override
+        public void onCycle(long instant) {
+          log.add("cycle " + instant);
+        }
+      }
+      ActiveObject<Quitter> q = rt.spawn(new Quitter(), ObjectConfig.synchronous(clock));
+      q.send(x -> log.add("first"));
+      q.send(x -> ActiveContext.current().orElseThrow().stop());
+      FutureValue<Boolean> third = q.call(x -> log.add("third"));
+      clock.step(2);
+      assertThat(log).containsExactly("first");
+      assertThatThrownBy(() -> third.getValue(Duration.ofSeconds(10)))
+          .isInstanceOf(ObjectStoppedException.class);
+    }
+  }
+
+  @Test
   void aReactiveObjectCannotWaitByNecessity() {
     try (ManualClock clock = Clock.manual(Duration.ofMillis(1));
         ActiveRuntime rt = ActiveRuntime.builder().jmx(false).build()) {
