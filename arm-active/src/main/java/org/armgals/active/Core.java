@@ -28,7 +28,7 @@ import org.jspecify.annotations.Nullable;
  * idles (re-checking the buffer after clearing the flag so no wake-up is lost). A synchronous
  * object is scheduled only by its clock, once per instant.
  */
-final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
+final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   static final int SCHEDULED = 1;
   static final int STOPPED = 2;
   static final int BATCH = 256;
@@ -44,8 +44,8 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
   static {
     try {
       MethodHandles.Lookup l = MethodHandles.lookup();
-      TAIL = l.findVarHandle(Core.class, "tail", Envelope.class);
-      SIZE = l.findVarHandle(Core.class, "size", int.class);
+      TAIL = l.findVarHandle(SenderSide.class, "tail", Envelope.class);
+      SIZE = l.findVarHandle(SenderSide.class, "size", int.class);
       STATE = l.findVarHandle(Core.class, "state", int.class);
     } catch (ReflectiveOperationException e) {
       throw new ExceptionInInitializerError(e);
@@ -53,16 +53,10 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
   }
 
   final RuntimeImpl runtime;
-  final long id;
   private final S servant;
   private final ObjectConfig config;
   private final @Nullable LockedBuffer locked;
 
-  // producers
-  @SuppressWarnings("unused") // accessed through TAIL
-  private volatile Envelope tail;
-
-  private volatile int size;
   private volatile int state;
 
   // consumer only
@@ -82,13 +76,8 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
   /** Written by this object's own thread only: numbers what it sends. */
   private long sendSeq;
 
-  /** The future this object's thread waits on, for wait-for cycle detection. */
-  volatile @Nullable ValueFuture<?> waitingFor;
-
   /** Synchronous mode only: what the clock's release fixed. Null for asynchronous objects. */
   private final @Nullable Instant instant;
-
-  private @Nullable Address address;
 
   /** The state of a synchronous object between its clock's two release phases. */
   private static final class Instant {
@@ -116,8 +105,8 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
   }
 
   Core(RuntimeImpl runtime, long id, S servant, ObjectConfig config) {
+    super(id);
     this.runtime = runtime;
-    this.id = id;
     this.servant = servant;
     this.config = config;
     this.locked =
@@ -457,7 +446,7 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
     while (spins > 0 && runtime.dispatcher().nothingWaiting()) {
       spins--;
       Thread.onSpinWait();
-      if (lb != null ? lb.hasUnseen() : tail != head) {
+      if (lb != null ? lb.hasUnseen() : head.next() != null) {
         return spins;
       }
     }
@@ -568,7 +557,22 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
     }
   }
 
+  /**
+   * The next linked event, or null. It does not read {@link #tail}: that line is written by every
+   * send, and a consumer reading it per event makes it bounce between cores. An event whose sender
+   * has swapped the tail but not linked it yet is seen on a later poll (the end-of-activation check
+   * reads the tail, so it is never lost).
+   */
   private @Nullable Envelope pollInbox() {
+    Envelope n = head.next();
+    if (n != null) {
+      head = n;
+    }
+    return n;
+  }
+
+  /** As {@link #pollInbox()}, but waits for a link in progress (all events up to the tail). */
+  private @Nullable Envelope pollInboxToTail() {
     Envelope h = head;
     Envelope n = h.next();
     if (n == null) {
@@ -622,7 +626,7 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
       deferredHead = null;
       deferredTail = null;
       deferredCount = 0;
-      for (Envelope e = pollInbox(); e != null; e = pollInbox()) {
+      for (Envelope e = pollInboxToTail(); e != null; e = pollInboxToTail()) {
         all.add(e);
       }
     }
@@ -638,9 +642,6 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
 
   // ---------------------------------------------------------------- blocked senders
 
-  /** Senders parked by the block policy; created on first use. */
-  private volatile java.util.concurrent.@Nullable ConcurrentLinkedQueue<Thread> blocked;
-
   private static final VarHandle BLOCKED;
 
   static {
@@ -648,7 +649,9 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
       BLOCKED =
           MethodHandles.lookup()
               .findVarHandle(
-                  Core.class, "blocked", java.util.concurrent.ConcurrentLinkedQueue.class);
+                  SenderSidePadding.class,
+                  "blocked",
+                  java.util.concurrent.ConcurrentLinkedQueue.class);
     } catch (ReflectiveOperationException e) {
       throw new ExceptionInInitializerError(e);
     }
@@ -772,7 +775,7 @@ final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
       deferredCount = 0;
       Envelope last = java.util.Objects.requireNonNull(instant).releasedTail;
       if (last != null && last != head) {
-        for (Envelope e = pollInbox(); e != null; e = pollInbox()) {
+        for (Envelope e = pollInboxToTail(); e != null; e = pollInboxToTail()) {
           batch.add(e);
           if (e == last) {
             break;
