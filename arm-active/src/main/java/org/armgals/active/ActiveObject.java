@@ -20,7 +20,11 @@ public interface ActiveObject<S> extends ActiveRef<S> {
   /** The configuration it was made with. */
   ObjectConfig config();
 
-  /** How many events wait in its buffer now (processable or not). */
+  /**
+   * How many events wait in its buffer (processable or not). Exact while the object is idle; while
+   * it runs, events it has already taken in the current activation may still be counted, at most
+   * 1/64 of the capacity (none for buffers under 128). The capacity check uses the same count.
+   */
   int queueDepth();
 
   /** Whether it has been stopped. */

@@ -68,6 +68,8 @@ final class Core<S> implements ActiveObject<S> {
   private @Nullable Envelope deferredTail;
   private int deferredCount;
   private boolean dirty;
+  private int taken;
+  private final int takenBatch;
 
   /** Written by this object's own thread only: numbers what it sends. */
   private long sendSeq;
@@ -92,6 +94,7 @@ final class Core<S> implements ActiveObject<S> {
     this.config = config;
     this.locked =
         config.overflow() instanceof OverflowPolicy.DropOldest ? new LockedBuffer() : null;
+    this.takenBatch = Math.max(1, Math.min(64, config.capacity() >> 6));
     Envelope stub = new Requests.Action<S>(s -> {}, null);
     this.head = stub;
     this.tail = stub;
@@ -299,12 +302,13 @@ final class Core<S> implements ActiveObject<S> {
     long deadline = 0;
     boolean waited = false;
     for (; ; ) {
-      int s = size;
-      if (s < capacity) {
-        if (SIZE.compareAndSet(this, s, s + 1)) {
-          return true;
-        }
-        continue;
+      if ((int) SIZE.getAndAdd(this, 1) < capacity) {
+        return true;
+      }
+      // Over: give the place back. Another sender may have seen the transient excess and be
+      // about to park; wake it if there is room after all.
+      if ((int) SIZE.getAndAdd(this, -1) - 1 < capacity) {
+        roomMade();
       }
       switch (config.overflow()) {
         case OverflowPolicy.Reject r -> {
@@ -363,10 +367,13 @@ final class Core<S> implements ActiveObject<S> {
     CURRENT.set(this);
     int processed = 0;
     boolean more = false;
+    CountDownLatch instant = null;
     try {
       if ((state & STOPPED) != 0) {
         cancelQueued();
       } else if (config.mode() == Mode.SYNCHRONOUS) {
+        instant = instantDone;
+        instantDone = null;
         processed = runInstant();
       } else {
         while (processed < BATCH) {
@@ -380,16 +387,22 @@ final class Core<S> implements ActiveObject<S> {
         more = processed == BATCH;
       }
     } finally {
+      returnTaken();
       CURRENT.remove();
       runner = null;
       runtime.countProcessed(processed);
+      if (more) {
+        runtime.dispatcher().requeue(this); // fairness: the back of the shared queue
+      } else {
+        roomMade();
+        STATE.getAndBitwiseAnd(this, ~SCHEDULED);
+      }
+      // The instant ends only once the object can be released again.
+      if (instant != null) {
+        instant.countDown();
+      }
     }
-    if (more) {
-      runtime.dispatcher().schedule(this);
-      return;
-    }
-    STATE.getAndBitwiseAnd(this, ~SCHEDULED);
-    if (needsActivation()) {
+    if (!more && needsActivation()) {
       trySchedule();
     }
   }
@@ -407,11 +420,34 @@ final class Core<S> implements ActiveObject<S> {
     return lb != null ? lb.hasUnseen() : tail != head;
   }
 
-  private void processOne(Envelope e) {
-    if (locked == null) {
-      SIZE.getAndAdd(this, -1);
+  /**
+   * Counts an event taken out of the buffer. Places go back to the senders in batches of {@link
+   * #takenBatch} (at most 1/64 of the capacity, 1 for buffers under 128): one contended atomic per
+   * batch rather than per event. Every batch is returned before the object parks or goes idle.
+   */
+  private void taken() {
+    if (locked == null && ++taken >= takenBatch) {
+      returnTaken();
+    }
+  }
+
+  /** Returns the places of the events taken so far. Consumer only. */
+  void returnTaken() {
+    int t = taken;
+    if (t == 0) {
+      return;
+    }
+    taken = 0;
+    int left = (int) SIZE.getAndAdd(this, -t) - t;
+    // Wake blocked senders at half capacity, not for every place: a park and an unpark per event
+    // would make a full buffer far slower than a half-empty one.
+    if (left <= config.capacity() >> 1) {
       roomMade();
     }
+  }
+
+  private void processOne(Envelope e) {
+    taken();
     try {
       e.process(this);
     } catch (Throwable t) {
@@ -553,6 +589,10 @@ final class Core<S> implements ActiveObject<S> {
 
   /** Parks the sender until there may be room, the object stopped, or the deadline passed. */
   private boolean awaitRoom(long deadline) {
+    Core<?> sender = CURRENT.get();
+    if (sender != null) {
+      sender.returnTaken();
+    }
     var q = blocked;
     if (q == null) {
       BLOCKED.compareAndSet(this, null, new java.util.concurrent.ConcurrentLinkedQueue<Thread>());
@@ -625,74 +665,82 @@ final class Core<S> implements ActiveObject<S> {
           .thenComparingLong(e -> e.from == null ? 0 : e.from.id())
           .thenComparingLong(e -> e.seq);
 
-  /** Takes every event waiting at the release, in a deterministic order, then the cycle. */
-  private int runInstant() {
-    long instant = pendingInstant;
-    CountDownLatch done = instantDone;
-    instantDone = null;
+  /** Retries skipped events oldest first, restarting after each one processed. */
+  private int retrySkipped(List<Envelope> skipped) {
     int processed = 0;
-    try {
-      List<Envelope> batch = new ArrayList<>();
-      LockedBuffer lb = locked;
-      if (lb != null) {
-        lb.takeReleased(batch);
-      } else {
-        for (Envelope d = deferredHead; d != null; d = d.deferredNext) {
-          batch.add(d);
+    boolean progress = true;
+    while (progress) {
+      progress = false;
+      for (int i = 0; i < skipped.size(); i++) {
+        Envelope e = skipped.get(i);
+        if (processableSafely(e)) {
+          skipped.remove(i);
+          processOne(e);
+          processed++;
+          progress = true;
+          break;
         }
-        deferredHead = null;
-        deferredTail = null;
-        int fresh = releasedSize - deferredCount;
-        deferredCount = 0;
-        for (int i = 0; i < fresh; i++) {
-          Envelope e = pollInbox();
-          if (e == null) {
-            break;
-          }
-          batch.add(e);
-        }
-      }
-      batch.sort(INSTANT_ORDER);
-      processed = processInstant(batch, lb);
-      if (servant instanceof ReactiveCycle rc) {
-        try {
-          rc.onCycle(instant);
-        } catch (Throwable t) {
-          ActiveRuntimeErrors.throwIfFatal(t);
-          runtime.reportFailure(this, null, t);
-        }
-      }
-    } finally {
-      if (done != null) {
-        done.countDown();
       }
     }
     return processed;
   }
 
-  /** Processes an instant's events to a fixpoint; what stays unprocessable waits for later. */
+  /** Takes every event waiting at the release, in a deterministic order, then the cycle. */
+  private int runInstant() {
+    List<Envelope> batch = new ArrayList<>();
+    LockedBuffer lb = locked;
+    if (lb != null) {
+      lb.takeReleased(batch);
+    } else {
+      for (Envelope d = deferredHead; d != null; d = d.deferredNext) {
+        batch.add(d);
+      }
+      deferredHead = null;
+      deferredTail = null;
+      int fresh = releasedSize - deferredCount;
+      deferredCount = 0;
+      for (int i = 0; i < fresh; i++) {
+        Envelope e = pollInbox();
+        if (e == null) {
+          break;
+        }
+        batch.add(e);
+      }
+    }
+    batch.sort(INSTANT_ORDER);
+    int processed = processInstant(batch, lb);
+    if (servant instanceof ReactiveCycle rc) {
+      try {
+        rc.onCycle(pendingInstant);
+      } catch (Throwable t) {
+        ActiveRuntimeErrors.throwIfFatal(t);
+        runtime.reportFailure(this, null, t);
+      }
+    }
+    return processed;
+  }
+
+  /**
+   * Processes an instant's events in order with the asynchronous rule: after each processed event
+   * (a state change) the events skipped so far are retried, oldest first, before newer ones. What
+   * stays unprocessable waits for a later instant.
+   */
   private int processInstant(List<Envelope> batch, @Nullable LockedBuffer lb) {
     int processed = 0;
-    List<Envelope> pending = batch;
-    boolean progress = true;
-    while (progress && !pending.isEmpty()) {
-      progress = false;
-      List<Envelope> still = new ArrayList<>();
-      for (Envelope e : pending) {
-        if (processableSafely(e)) {
-          processOne(e);
-          processed++;
-          progress = true;
-        } else {
-          still.add(e);
-        }
+    List<Envelope> skipped = new ArrayList<>();
+    for (Envelope e : batch) {
+      if (!processableSafely(e)) {
+        skipped.add(e);
+        continue;
       }
-      pending = still;
+      processOne(e);
+      processed++;
+      processed += retrySkipped(skipped);
     }
     if (lb != null) {
-      lb.putBack(pending);
+      lb.putBack(skipped);
     } else {
-      for (Envelope e : pending) {
+      for (Envelope e : skipped) {
         appendDeferred(e);
       }
     }

@@ -1,5 +1,7 @@
 package org.armgals.active;
 
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentLinkedQueue;
@@ -27,14 +29,29 @@ final class Dispatcher {
   private static final int SPINS = 1_000;
   private static final ThreadLocal<@Nullable Worker> CURRENT_WORKER = new ThreadLocal<>();
 
-  /** One worker thread; {@code running} is true while it polls or runs an activation. */
+  /**
+   * One worker thread; {@code running} is true while it polls or runs an activation. {@code next}
+   * holds the object this worker woke last: it runs it next, on the same core, unless a spinning
+   * worker steals it first (Go's {@code runnext}).
+   */
   private static final class Worker {
     final Dispatcher dispatcher;
     volatile @Nullable Thread thread;
     volatile boolean running;
+    volatile @Nullable Core<?> next;
 
     Worker(Dispatcher dispatcher) {
       this.dispatcher = dispatcher;
+    }
+  }
+
+  private static final VarHandle NEXT;
+
+  static {
+    try {
+      NEXT = MethodHandles.lookup().findVarHandle(Worker.class, "next", Core.class);
+    } catch (ReflectiveOperationException e) {
+      throw new ExceptionInInitializerError(e);
     }
   }
 
@@ -43,6 +60,7 @@ final class Dispatcher {
   private final ConcurrentLinkedQueue<Core<?>> runQueue = new ConcurrentLinkedQueue<>();
   private final ConcurrentLinkedQueue<Worker> idle = new ConcurrentLinkedQueue<>();
   private final Set<Worker> workers = ConcurrentHashMap.newKeySet();
+  private volatile Worker[] snapshot = new Worker[0];
   private final AtomicInteger alive = new AtomicInteger();
   private final AtomicInteger blocked = new AtomicInteger();
   private final AtomicInteger spinning = new AtomicInteger();
@@ -67,9 +85,35 @@ final class Dispatcher {
     return alive.get();
   }
 
-  /** Queues an object that holds its SCHEDULED flag. Any thread. */
+  /**
+   * Queues an object that holds its SCHEDULED flag. Any thread. From a worker, the object goes to
+   * that worker's {@code next} slot (the one it displaces goes to the shared queue): an object
+   * woken by another runs on the same core, with its data still in cache.
+   */
   void schedule(Core<?> core) {
+    Worker w = CURRENT_WORKER.get();
+    if (w != null && w.dispatcher == this) {
+      Core<?> displaced = (Core<?>) NEXT.getAndSet(w, core);
+      if (displaced == null) {
+        wakeIfNoneSpinning();
+        return;
+      }
+      core = displaced;
+    }
+    requeue(core);
+  }
+
+  /** Queues an object at the back of the shared queue (an object that used up its batch). */
+  void requeue(Core<?> core) {
     runQueue.offer(core);
+    wakeIfNoneSpinning();
+  }
+
+  /**
+   * Wakes a parked worker unless one is spinning (a spinner finds the work by itself). While a
+   * stream of messages flows, a worker is nearly always spinning, so this rarely unparks.
+   */
+  private void wakeIfNoneSpinning() {
     if (spinning.get() == 0) {
       Worker w = idle.poll();
       if (w != null) {
@@ -80,10 +124,17 @@ final class Dispatcher {
 
   // ---------------------------------------------------------------- blocking inside activations
 
-  /** The calling thread is about to park; if it is a worker, keep parallelism up. */
+  /**
+   * The calling thread is about to park; if it is a worker, it hands its {@code next} object to the
+   * others and keeps parallelism up.
+   */
   static void beforeBlock() {
     Worker w = CURRENT_WORKER.get();
     if (w != null) {
+      Core<?> n = (Core<?>) NEXT.getAndSet(w, null);
+      if (n != null) {
+        w.dispatcher.requeue(n);
+      }
       w.dispatcher.compensate();
     }
   }
@@ -118,6 +169,7 @@ final class Dispatcher {
   private void startWorker() {
     Worker w = new Worker(this);
     workers.add(w);
+    snapshot = workers.toArray(new Worker[0]);
     Thread t =
         Thread.ofVirtual()
             .name(name + "-worker-" + started.incrementAndGet())
@@ -131,9 +183,12 @@ final class Dispatcher {
     try {
       while (!terminated) {
         w.running = true;
-        Core<?> c = runQueue.poll();
+        Core<?> c = w.next == null ? null : (Core<?>) NEXT.getAndSet(w, null);
         if (c == null) {
-          c = spin();
+          c = runQueue.poll();
+        }
+        if (c == null) {
+          c = spin(w);
         }
         if (c == null) {
           w.running = false;
@@ -153,17 +208,29 @@ final class Dispatcher {
       }
     } finally {
       w.running = false;
+      Core<?> n = (Core<?>) NEXT.getAndSet(w, null);
+      if (n != null) {
+        requeue(n);
+      }
       workers.remove(w);
+      snapshot = workers.toArray(new Worker[0]);
       signalIfDraining();
     }
   }
 
-  private @Nullable Core<?> spin() {
+  /**
+   * Polls the shared queue for a while; in the last quarter of the spin it also steals the {@code
+   * next} object of another worker, which is then busy with something else.
+   */
+  private @Nullable Core<?> spin(Worker self) {
     spinning.incrementAndGet();
     try {
       for (int i = 0; i < SPINS && !terminated; i++) {
         Thread.onSpinWait();
         Core<?> c = runQueue.poll();
+        if (c == null && i >= SPINS - SPINS / 4) {
+          c = steal(self);
+        }
         if (c != null) {
           return c;
         }
@@ -172,6 +239,16 @@ final class Dispatcher {
     } finally {
       spinning.decrementAndGet();
     }
+  }
+
+  private @Nullable Core<?> steal(Worker self) {
+    for (Worker o : snapshot) {
+      Core<?> c = o.next;
+      if (o != self && c != null && NEXT.compareAndSet(o, c, null)) {
+        return c;
+      }
+    }
+    return null;
   }
 
   private boolean retireIfSurplus() {
@@ -204,7 +281,7 @@ final class Dispatcher {
       return false;
     }
     for (Worker w : workers) {
-      if (w.running) {
+      if (w.running || w.next != null) {
         return false;
       }
     }

@@ -65,7 +65,7 @@ abstract class Envelope implements Event {
   abstract void process(Core<?> receiver) throws Exception;
 
   /** It will never be processed (dropped, object stopped): fail its future, if it has one. */
-  void abandon(Throwable cause) {}
+  void abandon(ActiveException cause) {}
 
   /** It failed while processing: fail its future, if it has one. */
   void failed(Throwable cause) {}

@@ -7,6 +7,9 @@ interface Reply<R extends @Nullable Object> {
   /** The request succeeded with {@code value}. */
   void complete(R value);
 
-  /** The request failed, or will never run. */
+  /** The servant threw {@code cause} while processing the request. */
   void fail(Throwable cause);
+
+  /** The request will never run (dropped, or the receiver stopped) for {@code cause}. */
+  void abandon(ActiveException cause);
 }

@@ -74,8 +74,8 @@ final class Requests {
     }
 
     @Override
-    void abandon(Throwable cause) {
-      reply.fail(cause);
+    void abandon(ActiveException cause) {
+      reply.abandon(cause);
     }
 
     @Override
@@ -159,11 +159,17 @@ final class Requests {
     private final SyncFuture<?> future;
     private final @Nullable Object value;
     private final @Nullable Throwable failure;
+    private final boolean neverRan;
 
-    FutureReply(SyncFuture<?> future, @Nullable Object value, @Nullable Throwable failure) {
+    FutureReply(
+        SyncFuture<?> future,
+        @Nullable Object value,
+        @Nullable Throwable failure,
+        boolean neverRan) {
       this.future = future;
       this.value = value;
       this.failure = failure;
+      this.neverRan = neverRan;
     }
 
     @Override
@@ -173,7 +179,7 @@ final class Requests {
 
     @Override
     void process(Core<?> receiver) {
-      future.arrive(value, failure);
+      future.arrive(value, failure, neverRan);
     }
 
     @Override

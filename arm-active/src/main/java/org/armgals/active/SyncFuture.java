@@ -20,6 +20,7 @@ final class SyncFuture<T extends @Nullable Object>
   private final long requestId;
 
   private boolean arrived;
+  private boolean abandoned;
   private @Nullable Object value;
   private @Nullable Throwable failure;
   private @Nullable CompletableFuture<T> stage;
@@ -41,17 +42,22 @@ final class SyncFuture<T extends @Nullable Object>
   // receiver side: queue the reply to the owner
   @Override
   public void complete(T v) {
-    deliver(v, null);
+    deliver(v, null, false);
   }
 
   @Override
   public void fail(Throwable cause) {
-    deliver(null, cause);
+    deliver(null, cause, false);
   }
 
-  private void deliver(@Nullable Object v, @Nullable Throwable cause) {
+  @Override
+  public void abandon(ActiveException cause) {
+    deliver(null, cause, true);
+  }
+
+  private void deliver(@Nullable Object v, @Nullable Throwable cause, boolean neverRan) {
     try {
-      owner.post(new Requests.FutureReply(this, v, cause));
+      owner.post(new Requests.FutureReply(this, v, cause, neverRan));
     } catch (ObjectStoppedException stopped) {
       // The owner is gone; nobody can read this future any more.
       owner.runtime.countDropped();
@@ -59,9 +65,10 @@ final class SyncFuture<T extends @Nullable Object>
   }
 
   // owner side
-  synchronized void arrive(@Nullable Object v, @Nullable Throwable cause) {
+  synchronized void arrive(@Nullable Object v, @Nullable Throwable cause, boolean neverRan) {
     value = v;
     failure = cause;
+    abandoned = neverRan;
     arrived = true;
     CompletableFuture<T> s = stage;
     if (s != null) {
@@ -102,8 +109,8 @@ final class SyncFuture<T extends @Nullable Object>
     }
     Throwable f = failure;
     if (f != null) {
-      if (f instanceof ObjectStoppedException || f instanceof BufferFullException) {
-        throw (ActiveException) f;
+      if (abandoned && f instanceof ActiveException e) {
+        throw e;
       }
       throw new RequestFailedException(completer.toString(), f);
     }

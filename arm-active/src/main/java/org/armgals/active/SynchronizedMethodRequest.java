@@ -80,8 +80,11 @@ public abstract class SynchronizedMethodRequest<S, R extends @Nullable Object> e
   }
 
   @Override
-  final void abandon(Throwable cause) {
-    failed(cause);
+  final void abandon(ActiveException cause) {
+    Reply<R> r = reply;
+    if (r != null) {
+      r.abandon(cause);
+    }
   }
 
   @Override

@@ -83,9 +83,12 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
 
   @Override
   public void fail(Throwable cause) {
-    boolean abandoned =
-        cause instanceof ObjectStoppedException || cause instanceof BufferFullException;
-    finish(new Failure(cause, !abandoned));
+    finish(new Failure(cause, true));
+  }
+
+  @Override
+  public void abandon(ActiveException cause) {
+    finish(new Failure(cause, false));
   }
 
   private void finish(Object r) {
@@ -171,7 +174,7 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
   private T report(Object r) {
     if (r instanceof Failure f) {
       if (!f.servant() && f.cause() instanceof ActiveException e) {
-        throw e;
+        throw e; // never ran: ObjectStoppedException or BufferFullException, as documented
       }
       throw new RequestFailedException(completerName(), f.cause());
     }
@@ -200,6 +203,7 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
                 + completerName()
                 + "; reactive objects use the SynchronousFuture that call() gives them");
       }
+      me.returnTaken();
       me.waitingFor = this;
       List<Address> cycle = findCycle(me);
       if (cycle != null) {
