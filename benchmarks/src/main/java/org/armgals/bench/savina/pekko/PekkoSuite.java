@@ -7,6 +7,7 @@ import java.util.function.Function;
 import org.apache.pekko.actor.typed.ActorSystem;
 import org.apache.pekko.actor.typed.SpawnProtocol;
 import org.apache.pekko.actor.typed.javadsl.ActorContext;
+import org.armgals.bench.savina.Check;
 import org.armgals.bench.savina.IdleObjects;
 import org.armgals.bench.savina.Savina;
 import org.armgals.bench.savina.Sizes;
@@ -63,15 +64,20 @@ public final class PekkoSuite implements Suite {
     return TrialRoot.spawn(system, workload + "-" + ++roots, build);
   }
 
+  /** Terminates the actor system; stopping the million actors of the memory probe takes a while. */
   @Override
   public void close() {
     system.terminate();
     try {
-      system.getWhenTerminated().toCompletableFuture().get(10, TimeUnit.SECONDS);
+      system
+          .getWhenTerminated()
+          .toCompletableFuture()
+          .get(Check.STUCK.toSeconds(), TimeUnit.SECONDS);
     } catch (InterruptedException e) {
       Thread.currentThread().interrupt();
     } catch (ExecutionException | TimeoutException e) {
-      throw new IllegalStateException("the actor system did not terminate within 10 s", e);
+      throw new IllegalStateException(
+          "the actor system did not terminate within " + Check.STUCK, e);
     }
   }
 }
