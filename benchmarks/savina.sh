@@ -3,7 +3,8 @@
 #
 #   name       pingpong counting threadring fjthrput creation futurertt mem (default: all)
 #   --impl     which implementation(s) to run; default armgals
-#   --warmup n warm-up runs per workload (default 2); --runs n measured runs (default 3)
+#   --warmup n, --warmup-seconds s   warm up each workload by at least n runs (default 2) and
+#              s seconds (default 5); --runs n   measured runs (default 3)
 #   --no-build use benchmarks/target/benchmarks.jar as it is
 #
 # Builds benchmarks/target/benchmarks.jar with the Maven wrapper, then runs each workload of each
@@ -20,6 +21,7 @@ jar="$here/target/benchmarks.jar"
 impls=(armgals)
 names=()
 warmup=2
+warmup_seconds=5
 runs=3
 build=1
 while (($#)); do
@@ -32,9 +34,10 @@ while (($#)); do
       esac
       shift 2 ;;
     --warmup) warmup="${2:?--warmup needs a count}"; shift 2 ;;
+    --warmup-seconds) warmup_seconds="${2:?--warmup-seconds needs a count}"; shift 2 ;;
     --runs) runs="${2:?--runs needs a count}"; shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "savina.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) names+=("$1"); shift ;;
   esac
@@ -98,6 +101,6 @@ echo "# $("$java" -version 2>&1 | head -1); options: ${opts[*]}; $(nproc) cores"
 for impl in "${impls[@]}"; do
   for name in "${names[@]}"; do
     "$java" "${opts[@]}" -cp "$jar" org.armgals.bench.savina.Savina \
-      --impl "$impl" --warmup "$warmup" --runs "$runs" "$name"
+      --impl "$impl" --warmup "$warmup" --warmup-seconds "$warmup_seconds" --runs "$runs" "$name"
   done
 done

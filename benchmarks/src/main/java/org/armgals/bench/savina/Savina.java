@@ -16,8 +16,11 @@ import org.armgals.bench.savina.pekko.PekkoSuite;
  * mem impl=&lt;impl&gt; bytes_per_idle_object=&lt;b&gt;
  * </pre>
  *
- * <p>Usage: {@code Savina [--impl armgals|pekko] [--warmup n] [--runs n] [name...]} where a name is
- * one of {@link #WORKLOADS} or {@code mem}; no name runs them all. Sizes come from {@link
+ * <p>Usage: {@code Savina [--impl armgals|pekko] [--warmup n] [--warmup-seconds s] [--runs n]
+ * [name...]} where a name is one of {@link #WORKLOADS} or {@code mem}; no name runs them all. Each
+ * workload is warmed up by at least {@code n} runs (default 2) and at least {@code s} seconds
+ * (default 5), so that a workload whose run is short gets as much warm-up time as one whose run is
+ * long, then measured {@code --runs} times (default 3). Sizes come from {@link
  * Sizes#fromSystemProperties()}. {@code benchmarks/savina.sh} runs each name in a JVM of its own.
  * Exits with status 1, after the stack trace, if a run fails its check.
  */
@@ -41,16 +44,22 @@ public final class Savina {
     this.out = out;
   }
 
+  /** How a workload is warmed up and measured. */
+  record Plan(int warmupRuns, long warmupNanos, int runs) {}
+
   /** Entry point; see the class comment. */
   public static void main(String[] args) throws Exception {
     String impl = "armgals";
     int warmup = 2;
+    int warmupSeconds = 5;
     int runs = 3;
     List<String> names = new ArrayList<>();
     for (int i = 0; i < args.length; i++) {
       switch (args[i]) {
         case "--impl" -> impl = value(args, ++i, "--impl");
         case "--warmup" -> warmup = count(value(args, ++i, "--warmup"), "--warmup", 0);
+        case "--warmup-seconds" ->
+            warmupSeconds = count(value(args, ++i, "--warmup-seconds"), "--warmup-seconds", 0);
         case "--runs" -> runs = count(value(args, ++i, "--runs"), "--runs", 1);
         default -> names.add(known(args[i]));
       }
@@ -60,13 +69,14 @@ public final class Savina {
       names.add(MEM);
     }
     Sizes sizes = Sizes.fromSystemProperties();
+    Plan plan = new Plan(warmup, warmupSeconds * 1_000_000_000L, runs);
     try (Suite suite = suite(impl, sizes)) {
       Savina savina = new Savina(suite, sizes, TimeSource.system(), System.out);
       for (String name : names) {
         if (name.equals(MEM)) {
           savina.measureMemory();
         } else {
-          savina.measure(name, warmup, runs);
+          savina.measure(name, plan);
         }
       }
     } catch (Exception e) {
@@ -89,25 +99,32 @@ public final class Savina {
   }
 
   /** Warm-up runs, then measured runs, of one workload. */
-  void measure(String name, int warmup, int runs) throws Exception {
+  void measure(String name, Plan plan) throws Exception {
     Workload workload = suite.workload(name);
-    for (int i = 0; i < warmup + runs; i++) {
-      String prefix = i < warmup ? "warmup " : "";
-      try (Trial trial = workload.prepare()) {
-        System.gc();
-        long start = time.nanoTime();
-        long ops = trial.run();
-        double seconds = (time.nanoTime() - start) / 1e9;
-        out.printf(
-            Locale.ROOT,
-            "%ssavina name=%s impl=%s ops=%d seconds=%.3f ops_per_s=%.0f%n",
-            prefix,
-            name,
-            suite.impl(),
-            ops,
-            seconds,
-            ops / seconds);
-      }
+    long warmupEnd = time.nanoTime() + plan.warmupNanos();
+    for (int i = 0; i < plan.warmupRuns() || time.nanoTime() - warmupEnd < 0; i++) {
+      runOnce(name, workload, "warmup ");
+    }
+    for (int i = 0; i < plan.runs(); i++) {
+      runOnce(name, workload, "");
+    }
+  }
+
+  private void runOnce(String name, Workload workload, String prefix) throws Exception {
+    try (Trial trial = workload.prepare()) {
+      System.gc();
+      long start = time.nanoTime();
+      long ops = trial.run();
+      double seconds = (time.nanoTime() - start) / 1e9;
+      out.printf(
+          Locale.ROOT,
+          "%ssavina name=%s impl=%s ops=%d seconds=%.3f ops_per_s=%.0f%n",
+          prefix,
+          name,
+          suite.impl(),
+          ops,
+          seconds,
+          ops / seconds);
     }
   }
 
