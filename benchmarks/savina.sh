@@ -8,10 +8,11 @@
 #   --no-build use benchmarks/target/benchmarks.jar as it is
 #
 # Builds benchmarks/target/benchmarks.jar with the Maven wrapper, then runs each workload of each
-# implementation in a JVM of its own (a JDK >= 21: JAVA_HOME if it is one, else the newest under
-# /usr/lib/jvm), with the same JVM options for both implementations: SAVINA_JAVA_OPTS, default
-# "-Xms4g -Xmx4g". Sizes are overridden with -Dsavina.<key>=<n> in SAVINA_JAVA_OPTS (see Sizes).
-# Prints one line per run (see docs/benchmarks.md); exits non-zero if a run fails its check.
+# implementation in a JVM of its own, both implementations of a workload back to back, on a JDK
+# >= 21 (JAVA_HOME if it is one, else the newest under /usr/lib/jvm) with the same JVM options
+# for both: SAVINA_JAVA_OPTS, default "-Xms4g -Xmx4g". Sizes are overridden with
+# -Dsavina.<key>=<n> in SAVINA_JAVA_OPTS (see Sizes.java). Prints one line per run (see
+# docs/benchmarks.md); exits non-zero if a run fails its check.
 set -euo pipefail
 
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -98,8 +99,10 @@ if (($(jdk_major "$(dirname "$(dirname "$java")")") >= 23)); then
   opts+=(--sun-misc-unsafe-memory-access=allow)
 fi
 echo "# $("$java" -version 2>&1 | head -1); options: ${opts[*]}; $(nproc) cores" >&2
-for impl in "${impls[@]}"; do
-  for name in "${names[@]}"; do
+# Workload outside, implementation inside: on a shared, noisy machine the two implementations of
+# one workload then run minutes apart at most, under much the same load.
+for name in "${names[@]}"; do
+  for impl in "${impls[@]}"; do
     "$java" "${opts[@]}" -cp "$jar" org.armgals.bench.savina.Savina \
       --impl "$impl" --warmup "$warmup" --warmup-seconds "$warmup_seconds" --runs "$runs" "$name"
   done
