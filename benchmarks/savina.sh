@@ -38,7 +38,7 @@ while (($#)); do
     --warmup-seconds) warmup_seconds="${2:?--warmup-seconds needs a count}"; shift 2 ;;
     --runs) runs="${2:?--runs needs a count}"; shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "savina.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) names+=("$1"); shift ;;
   esac
