@@ -16,8 +16,9 @@ import org.jspecify.annotations.Nullable;
  * runs once its guard holds).
  *
  * <p>Errors: every send method throws {@link ObjectStoppedException} if the object is stopped,
- * {@link BufferFullException} if its buffer is full and its policy rejects (or blocks too long),
- * and {@link NullPointerException} naming a null argument.
+ * {@link BufferFullException} if its buffer is full and its policy rejects (or blocks too long), an
+ * {@link ActiveException} if the sender is interrupted while blocked by a full buffer (its
+ * interrupt status is kept), and {@link NullPointerException} naming a null argument.
  *
  * @param <S> the type of the object's servant
  */
@@ -62,8 +63,9 @@ public interface ActiveRef<S> {
    * return the futures of the requests. {@code equals}, {@code hashCode} and {@code toString} are
    * answered by the proxy itself.
    *
-   * @throws IllegalArgumentException {@code type} is not an interface, the servant does not
-   *     implement it, or a method has another return type (the message names the method)
+   * @throws IllegalArgumentException {@code type} is not an interface, is not public (the runtime
+   *     calls it from its own package), the servant does not implement it, or a method has another
+   *     return type (the message names the method)
    */
   <I> I proxy(Class<I> type);
 }

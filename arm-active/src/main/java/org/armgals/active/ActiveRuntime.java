@@ -59,8 +59,8 @@ public interface ActiveRuntime extends AutoCloseable {
   /**
    * Shuts the runtime down: see {@link ShutdownMode}. Idempotent.
    *
-   * @return whether everything ended within {@code timeout} (DRAIN: whether nothing had to be
-   *     cancelled)
+   * @return whether everything ended within {@code timeout} and, for DRAIN, whether no queued event
+   *     had to be discarded (events whose guard never opened are discarded)
    */
   boolean shutdown(ShutdownMode mode, Duration timeout);
 

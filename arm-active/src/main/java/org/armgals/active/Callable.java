@@ -6,9 +6,9 @@ import org.jspecify.annotations.Nullable;
  * An event that activates a method of the receiver's servant (paper §4.1, interface {@code
  * Callable}).
  *
- * <p>The receiving object calls {@link #setServant} once, when the request is enqueued, then {@link
- * #guard()} (through {@link #isProcessable()}) as often as needed, then {@link #apply()} exactly
- * once, all from the receiving object. Use {@link MethodRequest} or {@link
+ * <p>The receiving object calls {@link #setServant} once, when it first looks at the request, then
+ * {@link #guard()} (through {@link #isProcessable()}) as often as needed, then {@link #apply()}
+ * exactly once, all from the receiving object. Use {@link MethodRequest} or {@link
  * SynchronizedMethodRequest} rather than implementing this interface directly; they keep the
  * servant binding and the reply.
  *
@@ -17,7 +17,10 @@ import org.jspecify.annotations.Nullable;
  */
 public interface Callable<S, R> extends Event {
 
-  /** Binds the servant this request applies to. Called once, when enqueued. */
+  /**
+   * Binds the servant this request applies to. Called once by the receiving object, on its own
+   * thread, before it first evaluates the guard.
+   */
   void setServant(S servant);
 
   /** Whether the bound servant's state allows this request to run now. */

@@ -50,13 +50,22 @@ final class ClockSupport {
       }
     }
     boolean interrupted = false;
-    for (; ; ) {
-      try {
-        done.await();
-        break;
-      } catch (InterruptedException e) {
-        interrupted = true;
+    Core<?> caller = Core.current();
+    if (caller != null) {
+      caller.returnTaken(); // stepped from an asynchronous object: its count stays exact
+    }
+    Dispatcher.beforeBlock(); // ...and the other workers keep going
+    try {
+      for (; ; ) {
+        try {
+          done.await();
+          break;
+        } catch (InterruptedException e) {
+          interrupted = true;
+        }
       }
+    } finally {
+      Dispatcher.afterBlock();
     }
     if (interrupted) {
       Thread.currentThread().interrupt();

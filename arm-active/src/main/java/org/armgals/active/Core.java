@@ -28,10 +28,13 @@ import org.jspecify.annotations.Nullable;
  * idles (re-checking the buffer after clearing the flag so no wake-up is lost). A synchronous
  * object is scheduled only by its clock, once per instant.
  */
-final class Core<S> implements ActiveObject<S> {
+final class Core<S> extends RunQueue.Node implements ActiveObject<S> {
   static final int SCHEDULED = 1;
   static final int STOPPED = 2;
   static final int BATCH = 256;
+
+  /** How long, in spins, an activation waits for more events before going idle. */
+  static final int LINGER_SPINS = 200;
 
   private static final VarHandle TAIL;
   private static final VarHandle SIZE;
@@ -68,8 +71,13 @@ final class Core<S> implements ActiveObject<S> {
   private @Nullable Envelope deferredTail;
   private int deferredCount;
   private boolean dirty;
+
+  /** The envelope whose guard threw, and what it threw: it fails instead of running. */
+  private @Nullable GuardFailure guardFailure;
+
+  private record GuardFailure(Envelope envelope, Throwable error) {}
+
   private int taken;
-  private final int takenBatch;
 
   /** Written by this object's own thread only: numbers what it sends. */
   private long sendSeq;
@@ -77,15 +85,35 @@ final class Core<S> implements ActiveObject<S> {
   /** The future this object's thread waits on, for wait-for cycle detection. */
   volatile @Nullable ValueFuture<?> waitingFor;
 
-  /** The thread running an activation, for a cancelling shutdown. */
-  volatile @Nullable Thread runner;
+  /** Synchronous mode only: what the clock's release fixed. Null for asynchronous objects. */
+  private final @Nullable Instant instant;
 
-  /** Synchronous mode: the events waiting at the last release, and the instant to run. */
-  private int releasedSize;
-
-  private long pendingInstant;
-  private @Nullable CountDownLatch instantDone;
   private @Nullable Address address;
+
+  /** The state of a synchronous object between its clock's two release phases. */
+  private static final class Instant {
+    /** The last event linked at the last release: the instant takes it and all before it. */
+    @Nullable Envelope releasedTail;
+
+    /** The instant to run, or last run. */
+    long number;
+
+    /** Counted down when the object can be released again. */
+    @Nullable CountDownLatch done;
+  }
+
+  /** The first node of an empty buffer: it carries no event. */
+  private static final class Stub extends Envelope {
+    @Override
+    boolean processable(Object servant) {
+      return false;
+    }
+
+    @Override
+    void process(Core<?> receiver) {
+      throw new IllegalStateException("the buffer's stub is never processed");
+    }
+  }
 
   Core(RuntimeImpl runtime, long id, S servant, ObjectConfig config) {
     this.runtime = runtime;
@@ -94,15 +122,16 @@ final class Core<S> implements ActiveObject<S> {
     this.config = config;
     this.locked =
         config.overflow() instanceof OverflowPolicy.DropOldest ? new LockedBuffer() : null;
-    this.takenBatch = Math.max(1, Math.min(64, config.capacity() >> 6));
-    Envelope stub = new Requests.Action<S>(s -> {}, null);
+    this.instant = config.mode() == Mode.SYNCHRONOUS ? new Instant() : null;
+    Envelope stub = new Stub();
     this.head = stub;
     this.tail = stub;
   }
 
   /** The instant a synchronous object is running or last ran; 0 before its first. */
   long currentInstant() {
-    return pendingInstant;
+    Instant i = instant;
+    return i == null ? 0 : i.number;
   }
 
   static @Nullable Core<?> current() {
@@ -227,6 +256,7 @@ final class Core<S> implements ActiveObject<S> {
     if (config.clock() instanceof ClockSupport.Owner owner) {
       owner.support().unregister(this);
     }
+    roomMade(); // senders blocked by a full buffer learn at once that the object is gone
     trySchedule();
   }
 
@@ -329,6 +359,10 @@ final class Core<S> implements ActiveObject<S> {
             throw new BufferFullException(
                 address(), capacity, "sender blocked for " + b.timeout() + " without room");
           }
+          if ((state & STOPPED) != 0) {
+            runtime.countRejected();
+            throw new ObjectStoppedException(address());
+          }
         }
         case OverflowPolicy.DropOldest d ->
             throw new AssertionError("drop-oldest uses LockedBuffer");
@@ -363,23 +397,28 @@ final class Core<S> implements ActiveObject<S> {
 
   /** One activation, on a worker thread: the object holds {@link #SCHEDULED}. */
   void run() {
-    runner = Thread.currentThread();
     CURRENT.set(this);
     int processed = 0;
     boolean more = false;
-    CountDownLatch instant = null;
+    CountDownLatch released = null;
     try {
       if ((state & STOPPED) != 0) {
         cancelQueued();
       } else if (config.mode() == Mode.SYNCHRONOUS) {
-        instant = instantDone;
-        instantDone = null;
+        Instant i = java.util.Objects.requireNonNull(instant);
+        released = i.done;
+        i.done = null;
         processed = runInstant();
       } else {
-        while (processed < BATCH) {
+        int linger = LINGER_SPINS;
+        while (processed < BATCH && (state & STOPPED) == 0) {
           Envelope e = takeProcessable();
           if (e == null) {
-            break;
+            linger = lingerForEvents(linger);
+            if (linger < 0) {
+              break;
+            }
+            continue;
           }
           processOne(e);
           processed++;
@@ -389,7 +428,6 @@ final class Core<S> implements ActiveObject<S> {
     } finally {
       returnTaken();
       CURRENT.remove();
-      runner = null;
       runtime.countProcessed(processed);
       if (more) {
         runtime.dispatcher().requeue(this); // fairness: the back of the shared queue
@@ -398,13 +436,32 @@ final class Core<S> implements ActiveObject<S> {
         STATE.getAndBitwiseAnd(this, ~SCHEDULED);
       }
       // The instant ends only once the object can be released again.
-      if (instant != null) {
-        instant.countDown();
+      if (released != null) {
+        released.countDown();
       }
     }
     if (!more && needsActivation()) {
       trySchedule();
     }
+  }
+
+  /**
+   * Out of events: waits a little for more before going idle, if no other object is waiting for a
+   * worker. A sender streaming to this object then costs no scheduling round trip per few events.
+   *
+   * @return the spins left, or -1 to go idle
+   */
+  private int lingerForEvents(int spins) {
+    returnTaken(); // while it lingers, the object's count of queued events is exact
+    LockedBuffer lb = locked;
+    while (spins > 0 && runtime.dispatcher().nothingWaiting()) {
+      spins--;
+      Thread.onSpinWait();
+      if (lb != null ? lb.hasUnseen() : tail != head) {
+        return spins;
+      }
+    }
+    return -1;
   }
 
   /** After an activation: is there something the idle object must still do? */
@@ -422,11 +479,15 @@ final class Core<S> implements ActiveObject<S> {
 
   /**
    * Counts an event taken out of the buffer. Places go back to the senders in batches of {@link
-   * #takenBatch} (at most 1/64 of the capacity, 1 for buffers under 128): one contended atomic per
-   * batch rather than per event. Every batch is returned before the object parks or goes idle.
+   * #takenBatch()} (at most 1/64 of the capacity, 1 for buffers under 128): one contended atomic
+   * per batch rather than per event. Every batch is returned before the object parks or goes idle.
    */
+  private int takenBatch() {
+    return Math.max(1, Math.min(64, config.capacity() >> 6));
+  }
+
   private void taken() {
-    if (locked == null && ++taken >= takenBatch) {
+    if (locked == null && ++taken >= takenBatch()) {
       returnTaken();
     }
   }
@@ -449,6 +510,11 @@ final class Core<S> implements ActiveObject<S> {
   private void processOne(Envelope e) {
     taken();
     try {
+      GuardFailure g = guardFailure;
+      if (g != null && g.envelope() == e) {
+        guardFailure = null;
+        throw new IllegalStateException("the guard of " + e + " threw " + g.error(), g.error());
+      }
       e.process(this);
     } catch (Throwable t) {
       ActiveRuntimeErrors.throwIfFatal(t);
@@ -496,7 +562,8 @@ final class Core<S> implements ActiveObject<S> {
       return e.processable(servant);
     } catch (Throwable t) {
       ActiveRuntimeErrors.throwIfFatal(t);
-      // A guard that throws makes its event fail rather than block the buffer.
+      // A guard that throws makes its event fail (without running) rather than block the buffer.
+      guardFailure = new GuardFailure(e, t);
       return true;
     }
   }
@@ -613,7 +680,9 @@ final class Core<S> implements ActiveObject<S> {
         java.util.concurrent.locks.LockSupport.parkNanos(this, remaining);
         if (Thread.interrupted()) {
           me.interrupt();
-          return false;
+          runtime.countRejected();
+          throw new ActiveException(
+              "interrupted while waiting for room in the buffer of " + address());
         }
       }
     } finally {
@@ -640,7 +709,9 @@ final class Core<S> implements ActiveObject<S> {
     if (lb != null) {
       lb.markRelease();
     } else {
-      releasedSize = size;
+      // The last node linked now: events whose place was reserved but that are not linked yet
+      // were sent at the same time as the release, and belong to the next instant.
+      java.util.Objects.requireNonNull(instant).releasedTail = tail;
     }
   }
 
@@ -652,8 +723,9 @@ final class Core<S> implements ActiveObject<S> {
         return false;
       }
       if (STATE.compareAndSet(this, 0, SCHEDULED)) {
-        pendingInstant = instant;
-        instantDone = done;
+        Instant i = java.util.Objects.requireNonNull(this.instant);
+        i.number = instant;
+        i.done = done;
         runtime.dispatcher().schedule(this);
         return true;
       }
@@ -669,7 +741,7 @@ final class Core<S> implements ActiveObject<S> {
   private int retrySkipped(List<Envelope> skipped) {
     int processed = 0;
     boolean progress = true;
-    while (progress) {
+    while (progress && (state & STOPPED) == 0) {
       progress = false;
       for (int i = 0; i < skipped.size(); i++) {
         Envelope e = skipped.get(i);
@@ -697,21 +769,22 @@ final class Core<S> implements ActiveObject<S> {
       }
       deferredHead = null;
       deferredTail = null;
-      int fresh = releasedSize - deferredCount;
       deferredCount = 0;
-      for (int i = 0; i < fresh; i++) {
-        Envelope e = pollInbox();
-        if (e == null) {
-          break;
+      Envelope last = java.util.Objects.requireNonNull(instant).releasedTail;
+      if (last != null && last != head) {
+        for (Envelope e = pollInbox(); e != null; e = pollInbox()) {
+          batch.add(e);
+          if (e == last) {
+            break;
+          }
         }
-        batch.add(e);
       }
     }
     batch.sort(INSTANT_ORDER);
     int processed = processInstant(batch, lb);
-    if (servant instanceof ReactiveCycle rc) {
+    if (servant instanceof ReactiveCycle rc && (state & STOPPED) == 0) {
       try {
-        rc.onCycle(pendingInstant);
+        rc.onCycle(java.util.Objects.requireNonNull(instant).number);
       } catch (Throwable t) {
         ActiveRuntimeErrors.throwIfFatal(t);
         runtime.reportFailure(this, null, t);
@@ -728,7 +801,13 @@ final class Core<S> implements ActiveObject<S> {
   private int processInstant(List<Envelope> batch, @Nullable LockedBuffer lb) {
     int processed = 0;
     List<Envelope> skipped = new ArrayList<>();
-    for (Envelope e : batch) {
+    for (int i = 0; i < batch.size(); i++) {
+      Envelope e = batch.get(i);
+      if ((state & STOPPED) != 0) {
+        // Stopped by one of the instant's events: the rest is discarded with the buffer.
+        skipped.addAll(batch.subList(i, batch.size()));
+        break;
+      }
       if (!processableSafely(e)) {
         skipped.add(e);
         continue;

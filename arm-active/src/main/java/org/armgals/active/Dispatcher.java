@@ -57,7 +57,7 @@ final class Dispatcher {
 
   private final String name;
   private final int parallelism;
-  private final ConcurrentLinkedQueue<Core<?>> runQueue = new ConcurrentLinkedQueue<>();
+  private final RunQueue runQueue = new RunQueue();
   private final ConcurrentLinkedQueue<Worker> idle = new ConcurrentLinkedQueue<>();
   private final Set<Worker> workers = ConcurrentHashMap.newKeySet();
   private volatile Worker[] snapshot = new Worker[0];
@@ -91,6 +91,10 @@ final class Dispatcher {
    * woken by another runs on the same core, with its data still in cache.
    */
   void schedule(Core<?> core) {
+    if (terminated) {
+      core.run(); // only stopped objects get here: the activation discards their events
+      return;
+    }
     Worker w = CURRENT_WORKER.get();
     if (w != null && w.dispatcher == this) {
       Core<?> displaced = (Core<?>) NEXT.getAndSet(w, core);
@@ -103,8 +107,25 @@ final class Dispatcher {
     requeue(core);
   }
 
+  /**
+   * Whether the calling thread is one of this dispatcher's workers and no other object waits for
+   * it: the shared queue is empty and the worker's own next slot too. A lingering object gives way
+   * to any waiting one; on a thread driving the dispatcher by hand it never lingers.
+   */
+  boolean nothingWaiting() {
+    if (!runQueue.isEmpty()) {
+      return false;
+    }
+    Worker w = CURRENT_WORKER.get();
+    return w != null && w.dispatcher == this && w.next == null;
+  }
+
   /** Queues an object at the back of the shared queue (an object that used up its batch). */
   void requeue(Core<?> core) {
+    if (terminated) {
+      core.run();
+      return;
+    }
     runQueue.offer(core);
     wakeIfNoneSpinning();
   }
@@ -180,6 +201,7 @@ final class Dispatcher {
 
   private void loop(Worker w) {
     CURRENT_WORKER.set(w);
+    boolean retired = false;
     try {
       while (!terminated) {
         w.running = true;
@@ -194,6 +216,7 @@ final class Dispatcher {
           w.running = false;
           signalIfDraining();
           if (retireIfSurplus()) {
+            retired = true;
             return;
           }
           parkIdle(w);
@@ -208,6 +231,11 @@ final class Dispatcher {
       }
     } finally {
       w.running = false;
+      if (!retired && !terminated) {
+        // A fatal error ended this worker (it was rethrown, not swallowed): replace it so the
+        // runtime keeps its parallelism.
+        startWorker();
+      }
       Core<?> n = (Core<?>) NEXT.getAndSet(w, null);
       if (n != null) {
         requeue(n);
@@ -273,6 +301,33 @@ final class Dispatcher {
     idle.remove(w);
   }
 
+  // ---------------------------------------------------------------- invoker (STYLE rule 4)
+
+  /**
+   * One worker step on the calling thread: runs one activation of the next queued object. For a
+   * dispatcher with no workers, driven by hand (tests, model checking).
+   *
+   * @return false if no object was queued
+   */
+  boolean runOne() {
+    for (; ; ) {
+      Core<?> c = runQueue.poll();
+      if (c != null) {
+        c.run();
+        return true;
+      }
+      if (runQueue.isEmpty()) {
+        return false;
+      }
+      Thread.onSpinWait(); // another thread is polling
+    }
+  }
+
+  /** How many worker threads are inside their loop. */
+  int liveWorkers() {
+    return workers.size();
+  }
+
   // ---------------------------------------------------------------- shutdown
 
   /** Whether no object is queued to run and no worker runs an activation. */
@@ -331,11 +386,32 @@ final class Dispatcher {
     }
   }
 
-  /** Stops every worker once it is done with its activation. */
-  void terminate() {
+  /**
+   * Stops every worker once it is done with its activation, waits for them until {@code deadline},
+   * then runs what is still queued on the calling thread: objects are all stopped by then, so their
+   * activations only discard events and fail futures. A send that races the shutdown finds {@link
+   * #terminated} set and is handled the same way by its own thread.
+   */
+  void terminate(long deadline) {
     terminated = true;
-    for (Worker w : workers) {
-      LockSupport.unpark(w.thread);
+    for (Worker w : snapshot) {
+      Thread t = w.thread;
+      LockSupport.unpark(t);
+    }
+    for (Worker w : snapshot) {
+      Thread t = w.thread;
+      long remaining = deadline - runtime.timeSource().nanoTime();
+      if (t != null && t != Thread.currentThread() && remaining > 0) {
+        try {
+          t.join(java.time.Duration.ofNanos(remaining));
+        } catch (InterruptedException e) {
+          Thread.currentThread().interrupt();
+          break;
+        }
+      }
+    }
+    for (Core<?> c = runQueue.poll(); c != null; c = runQueue.poll()) {
+      c.run();
     }
   }
 }

@@ -2,8 +2,9 @@ package org.armgals.active;
 
 /**
  * A servant that takes data events: every queued event that is not a {@link Callable} is handed to
- * {@link #process}. A servant that does not implement this interface only takes method requests; a
- * data event sent to it fails and goes to the error handler.
+ * {@link #process}, and so is the {@link FutureEvent} of each reply a synchronous object takes. A
+ * servant that does not implement this interface only takes method requests; a data event sent to
+ * it fails and goes to the error handler.
  *
  * <p>Threading: both methods are called by the owning object only, one call at a time.
  */

@@ -26,7 +26,8 @@ public interface Future {
   /**
    * Waits by necessity until the request has been processed.
    *
-   * @throws RequestFailedException the servant threw; its exception is the cause
+   * @throws RequestFailedException the request failed in the receiver (its servant or its guard
+   *     threw); the exception is in the cause chain
    * @throws WaitCycleException waiting would deadlock
    * @throws ObjectStoppedException the receiver was stopped before processing the request
    * @throws FutureInterruptedException the waiting thread was interrupted

@@ -17,7 +17,8 @@ public interface FutureValue<T extends @Nullable Object> extends Future {
   /**
    * The value, waiting by necessity until it is there.
    *
-   * @throws RequestFailedException the servant threw; its exception is the cause
+   * @throws RequestFailedException the request failed in the receiver (its servant or its guard
+   *     threw); the exception is in the cause chain
    * @throws WaitCycleException waiting would deadlock
    * @throws ObjectStoppedException the receiver was stopped before processing the request
    * @throws FutureInterruptedException the waiting thread was interrupted

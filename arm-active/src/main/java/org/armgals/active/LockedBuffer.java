@@ -30,7 +30,8 @@ final class LockedBuffer {
 
   /**
    * Queues {@code e}; if the buffer was full, removes and returns the oldest event that is not a
-   * reply (replies are never dropped and never counted against the capacity).
+   * reply. Replies are never dropped and always queued, even beyond the capacity; while queued they
+   * take a place like any event.
    */
   @Nullable Envelope offer(Envelope e, int capacity) {
     lock.lock();

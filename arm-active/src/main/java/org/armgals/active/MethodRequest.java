@@ -1,7 +1,5 @@
 package org.armgals.active;
 
-import static java.util.Objects.requireNonNull;
-
 import org.jspecify.annotations.Nullable;
 
 /**
@@ -12,21 +10,10 @@ import org.jspecify.annotations.Nullable;
  *
  * @param <S> the servant type
  */
-public abstract class MethodRequest<S> extends Envelope implements Callable<S, Void> {
-  private @Nullable S servant;
+public abstract class MethodRequest<S> extends ServantRequest<S> implements Callable<S, Void> {
 
   /** For subclasses. */
   protected MethodRequest() {}
-
-  @Override
-  public final void setServant(S servant) {
-    this.servant = requireNonNull(servant, "servant");
-  }
-
-  @Override
-  public final boolean guard() {
-    return guard(servant());
-  }
 
   @Override
   public final @Nullable Void apply() throws Exception {
@@ -34,37 +21,11 @@ public abstract class MethodRequest<S> extends Envelope implements Callable<S, V
     return null;
   }
 
-  /** Whether the servant's state lets the request run; default {@code true}. */
-  protected boolean guard(S servant) {
-    return true;
-  }
-
   /** The request's work, on the receiver's thread. */
   protected abstract void invoke(S servant) throws Exception;
 
-  private S servant() {
-    S s = servant;
-    if (s == null) {
-      throw new IllegalStateException("no servant: the request has not been queued yet");
-    }
-    return s;
-  }
-
   @Override
-  @SuppressWarnings("unchecked")
-  final boolean processable(Object servant) {
-    if (this.servant == null) {
-      setServant((S) servant);
-    }
-    return guard();
-  }
-
-  @Override
-  @SuppressWarnings("unchecked")
-  final void process(Core<?> receiver) throws Exception {
-    if (this.servant == null) {
-      setServant((S) receiver.servant());
-    }
+  final void run() throws Exception {
     apply();
   }
 }

@@ -59,13 +59,17 @@ public record ObjectConfig(
    * {@link #DEFAULT_BLOCK_TIMEOUT} when full.
    */
   public static ObjectConfig asynchronous() {
-    return new ObjectConfig(
-        Mode.ASYNCHRONOUS,
-        null,
-        DEFAULT_CAPACITY,
-        OverflowPolicy.block(DEFAULT_BLOCK_TIMEOUT),
-        ObjectListener.NONE);
+    return DEFAULT_ASYNCHRONOUS;
   }
+
+  /** Shared: a configuration is an immutable value, and one per object would cost 48 bytes. */
+  private static final ObjectConfig DEFAULT_ASYNCHRONOUS =
+      new ObjectConfig(
+          Mode.ASYNCHRONOUS,
+          null,
+          DEFAULT_CAPACITY,
+          OverflowPolicy.block(DEFAULT_BLOCK_TIMEOUT),
+          ObjectListener.NONE);
 
   /**
    * A synchronous (reactive) object released by {@code clock}, with a buffer of {@link

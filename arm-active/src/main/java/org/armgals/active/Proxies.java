@@ -15,6 +15,14 @@ final class Proxies {
     if (!type.isInterface()) {
       throw new IllegalArgumentException("proxy type must be an interface, was " + type.getName());
     }
+    if (!java.lang.reflect.Modifier.isPublic(type.getModifiers())
+        && !type.getPackageName().equals(Proxies.class.getPackageName())) {
+      throw new IllegalArgumentException(
+          "proxy interface "
+              + type.getName()
+              + " must be public: the runtime calls its methods from package "
+              + Proxies.class.getPackageName());
+    }
     if (!type.isInstance(servant)) {
       throw new IllegalArgumentException(
           "servant " + servant.getClass().getName() + " does not implement " + type.getName());

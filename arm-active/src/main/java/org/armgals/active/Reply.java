@@ -7,7 +7,7 @@ interface Reply<R extends @Nullable Object> {
   /** The request succeeded with {@code value}. */
   void complete(R value);
 
-  /** The servant threw {@code cause} while processing the request. */
+  /** The request failed in the receiver: its servant (or its guard) threw {@code cause}. */
   void fail(Throwable cause);
 
   /** The request will never run (dropped, or the receiver stopped) for {@code cause}. */

@@ -1,8 +1,10 @@
 package org.armgals.active;
 
 /**
- * A synchronized request failed in its servant: thrown by {@link Future#touch()} and {@link
- * FutureValue#getValue()}; the servant's exception is the {@linkplain #getCause() cause}.
+ * A synchronized request failed in its receiver: its servant threw (that exception is the
+ * {@linkplain #getCause() cause}), or its guard threw (the cause is an {@link
+ * IllegalStateException} whose own cause is the guard's exception). Thrown by {@link
+ * Future#touch()} and {@link FutureValue#getValue()}.
  */
 public final class RequestFailedException extends ActiveException {
   private static final long serialVersionUID = 1L;

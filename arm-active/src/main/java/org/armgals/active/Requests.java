@@ -48,7 +48,7 @@ final class Requests {
   static final class Function<S, R extends @Nullable Object> extends Envelope {
     private @Nullable ServantFunction<? super S, R> function;
     private @Nullable Guard<? super S> guard;
-    private final Reply<R> reply;
+    private @Nullable Reply<R> reply;
 
     Function(ServantFunction<? super S, R> function, @Nullable Guard<? super S> guard, Reply<R> r) {
       this.function = function;
@@ -70,23 +70,34 @@ final class Requests {
       if (f == null) {
         throw new IllegalStateException("request processed twice");
       }
-      reply.complete(f.apply((S) receiver.servant()));
+      R value = f.apply((S) receiver.servant());
+      Reply<R> r = reply;
+      if (r != null) {
+        r.complete(value);
+      }
     }
 
     @Override
     void abandon(ActiveException cause) {
-      reply.abandon(cause);
+      Reply<R> r = reply;
+      if (r != null) {
+        r.abandon(cause);
+      }
     }
 
     @Override
     void failed(Throwable cause) {
-      reply.fail(cause);
+      Reply<R> r = reply;
+      if (r != null) {
+        r.fail(cause);
+      }
     }
 
     @Override
     void clear() {
       function = null;
       guard = null;
+      reply = null;
     }
 
     @Override
@@ -97,7 +108,9 @@ final class Requests {
 
   /** A data event, or a user {@link Callable} that is not one of the runtime's request classes. */
   static final class Wrapped extends Envelope {
-    private final Event event;
+    /** The event; null once processed, so that the buffer's stub does not keep it alive. */
+    private @Nullable Event event;
+
     private boolean bound;
 
     Wrapped(Event event) {
@@ -106,24 +119,26 @@ final class Requests {
 
     @Override
     boolean processable(Object servant) {
-      if (event instanceof Callable<?, ?> c) {
+      Event ev = event();
+      if (ev instanceof Callable<?, ?> c) {
         bindServant(c, servant);
         return c.isProcessable();
       }
       if (servant instanceof EventProcessor p) {
-        return p.isProcessable(event);
+        return p.isProcessable(ev);
       }
-      return event.isProcessable();
+      return ev.isProcessable();
     }
 
     @Override
     void process(Core<?> receiver) throws Exception {
       Object servant = receiver.servant();
-      if (event instanceof Callable<?, ?> c) {
+      Event ev = event();
+      if (ev instanceof Callable<?, ?> c) {
         bindServant(c, servant);
         c.apply();
       } else if (servant instanceof EventProcessor p) {
-        p.process(event);
+        p.process(ev);
       } else {
         throw new IllegalStateException(
             "servant "
@@ -131,7 +146,7 @@ final class Requests {
                 + " of "
                 + receiver.address()
                 + " takes no data events (it does not implement EventProcessor); got "
-                + event);
+                + ev);
       }
     }
 
@@ -144,13 +159,23 @@ final class Requests {
     }
 
     @Override
+    void clear() {
+      event = null;
+    }
+
+    @Override
     Event event() {
-      return event;
+      Event ev = event;
+      if (ev == null) {
+        throw new IllegalStateException("a processed event is not kept");
+      }
+      return ev;
     }
 
     @Override
     public String toString() {
-      return event.toString();
+      Event ev = event;
+      return ev == null ? "processed event" : ev.toString();
     }
   }
 
@@ -178,8 +203,11 @@ final class Requests {
     }
 
     @Override
-    void process(Core<?> receiver) {
+    void process(Core<?> receiver) throws Exception {
       future.arrive(value, failure, neverRan);
+      if (receiver.servant() instanceof EventProcessor p) {
+        p.process(event());
+      }
     }
 
     @Override

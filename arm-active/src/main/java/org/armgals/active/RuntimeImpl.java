@@ -7,7 +7,6 @@ import java.time.Duration;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.LongAdder;
 import javax.management.JMException;
 import javax.management.ObjectName;
@@ -30,9 +29,8 @@ final class RuntimeImpl implements ActiveRuntime {
   private final ErrorHandler errorHandler;
   private final @Nullable Transport transport;
   private final TimeSource timeSource;
-  private final ConcurrentHashMap<Long, Core<?>> objects = new ConcurrentHashMap<>();
+  private final ObjectTable objects = new ObjectTable();
   private final Set<ClockSupport> clocks = ConcurrentHashMap.newKeySet();
-  private final AtomicLong ids = new AtomicLong();
   private final AtomicInteger phase = new AtomicInteger(RUNNING);
   private final LongAdder processed = new LongAdder();
   private final LongAdder dropped = new LongAdder();
@@ -86,8 +84,12 @@ final class RuntimeImpl implements ActiveRuntime {
     if (phase.get() != RUNNING) {
       throw new IllegalStateException("runtime " + name + " is shut down; cannot spawn " + servant);
     }
-    Core<S> core = new Core<>(this, ids.incrementAndGet(), servant, config);
-    objects.put(core.id, core);
+    Core<S> core = objects.add(id -> new Core<>(this, id, servant, config));
+    if (phase.get() != RUNNING) {
+      // A shutdown began while this object was being added; it may have missed it.
+      core.stop();
+      throw new IllegalStateException("runtime " + name + " is shut down; cannot spawn " + servant);
+    }
     if (config.clock() instanceof ClockSupport.Owner owner) {
       clocks.add(owner.support());
       owner.support().register(core);
@@ -96,7 +98,7 @@ final class RuntimeImpl implements ActiveRuntime {
   }
 
   void unregister(Core<?> core) {
-    objects.remove(core.id, core);
+    objects.remove(core);
   }
 
   @Override
@@ -166,13 +168,15 @@ final class RuntimeImpl implements ActiveRuntime {
 
   @Override
   public RuntimeStats stats() {
-    long queued = 0;
-    long max = 0;
-    for (Core<?> c : objects.values()) {
-      int d = c.queueDepth();
-      queued += d;
-      max = Math.max(max, d);
-    }
+    long[] depth = new long[2];
+    objects.forEach(
+        c -> {
+          int d = c.queueDepth();
+          depth[0] += d;
+          depth[1] = Math.max(depth[1], d);
+        });
+    long queued = depth[0];
+    long max = depth[1];
     long overruns = 0;
     for (ClockSupport c : clocks) {
       overruns += c.overruns();
@@ -203,16 +207,14 @@ final class RuntimeImpl implements ActiveRuntime {
     long deadline = timeSource.nanoTime() + timeout.toNanos();
     boolean clean = true;
     if (mode == ShutdownMode.DRAIN) {
-      clean = dispatcher.awaitQuiet(deadline);
+      clean = dispatcher.awaitQuiet(deadline) && stats().queuedEvents() == 0;
     }
-    for (Core<?> c : objects.values()) {
-      c.stop();
-    }
+    objects.forEach(Core::stop);
     if (mode == ShutdownMode.CANCEL) {
       dispatcher.interruptRunning();
     }
     clean &= dispatcher.awaitQuiet(deadline);
-    dispatcher.terminate();
+    dispatcher.terminate(deadline);
     if (transport != null) {
       transport.detach(name);
     }

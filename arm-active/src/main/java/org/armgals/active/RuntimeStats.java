@@ -2,7 +2,7 @@ package org.armgals.active;
 
 /**
  * A snapshot of a runtime's figures, also published over JMX as the MBean {@code
- * org.armgals:type=ActiveRuntime,name=<runtime name>}.
+ * org.armgals:type=ActiveRuntime,name="<runtime name>"} (quoted by {@code ObjectName.quote}).
  *
  * @param objects live objects
  * @param queuedEvents events waiting in all buffers

@@ -8,8 +8,10 @@ import org.jspecify.annotations.Nullable;
 /**
  * The future of a synchronous (reactive) object: active wait (paper §5.2). The receiver's
  * completion is not written here directly; it is queued to the owner as a {@link
- * Requests.FutureReply} and takes effect when the owner processes it at one of its releases, so the
- * instant at which a value appears depends only on instants, never on thread timing.
+ * Requests.FutureReply} and takes effect when the owner processes it at one of its releases, when
+ * the replying object runs on the same manual clock, the instant at which the value appears depends
+ * only on instants, never on thread timing; an asynchronous replier answers whenever it runs, and
+ * the value appears at the first release after that.
  *
  * <p>All reads and the arrival happen on the owner's thread (its instants are sequential).
  */
@@ -98,7 +100,7 @@ final class SyncFuture<T extends @Nullable Object>
 
   @Override
   public void touch(Duration timeout) {
-    getValue();
+    getValue(timeout);
   }
 
   @Override
@@ -117,9 +119,13 @@ final class SyncFuture<T extends @Nullable Object>
     return (T) value;
   }
 
-  /** Never waits: the same as {@link #getValue()}. */
+  /** Never waits: the same as {@link #getValue()}, once the timeout is checked. */
   @Override
   public T getValue(Duration timeout) {
+    java.util.Objects.requireNonNull(timeout, "timeout");
+    if (timeout.isNegative()) {
+      throw new IllegalArgumentException("timeout must be >= 0, was " + timeout);
+    }
     return getValue();
   }
 

@@ -1,7 +1,5 @@
 package org.armgals.active;
 
-import static java.util.Objects.requireNonNull;
-
 import org.jspecify.annotations.Nullable;
 
 /**
@@ -14,64 +12,27 @@ import org.jspecify.annotations.Nullable;
  * @param <S> the servant type
  * @param <R> the result type
  */
-public abstract class SynchronizedMethodRequest<S, R extends @Nullable Object> extends Envelope
-    implements Callable<S, R> {
-  private @Nullable S servant;
+public abstract class SynchronizedMethodRequest<S, R extends @Nullable Object>
+    extends ServantRequest<S> implements Callable<S, R> {
   private @Nullable Reply<R> reply;
 
   /** For subclasses. */
   protected SynchronizedMethodRequest() {}
 
   @Override
-  public final void setServant(S servant) {
-    this.servant = requireNonNull(servant, "servant");
-  }
-
-  @Override
-  public final boolean guard() {
-    return guard(servant());
-  }
-
-  @Override
   public final R apply() throws Exception {
     return invoke(servant());
   }
 
-  /** Whether the servant's state lets the request run; default {@code true}. */
-  protected boolean guard(S servant) {
-    return true;
-  }
-
   /** The request's work, on the receiver's thread; its result completes the sender's future. */
   protected abstract R invoke(S servant) throws Exception;
-
-  private S servant() {
-    S s = servant;
-    if (s == null) {
-      throw new IllegalStateException("no servant: the request has not been queued yet");
-    }
-    return s;
-  }
 
   final void reply(Reply<R> r) {
     this.reply = r;
   }
 
   @Override
-  @SuppressWarnings("unchecked")
-  final boolean processable(Object servant) {
-    if (this.servant == null) {
-      setServant((S) servant);
-    }
-    return guard();
-  }
-
-  @Override
-  @SuppressWarnings("unchecked")
-  final void process(Core<?> receiver) throws Exception {
-    if (this.servant == null) {
-      setServant((S) receiver.servant());
-    }
+  final void run() throws Exception {
     R value = apply();
     Reply<R> r = reply;
     if (r != null) {

@@ -108,8 +108,8 @@ class ActiveObjectContractTest {
       r.sendWhen(x -> x.size() >= 2, x -> x.add("guarded"));
       r.send(x -> x.add("first"));
       r.send(x -> x.add("second"));
-      h.awaitUntil(r, () -> h.get(r.call(Recorder::size)) == 3);
-      assertThat(seen(h, r)).containsExactly("first", "second", "guarded");
+      List<String> seen = h.get(r.callWhen(x -> x.size() == 3, x -> List.copyOf(x.seen)));
+      assertThat(seen).containsExactly("first", "second", "guarded");
     }
   }
 
@@ -203,6 +203,32 @@ class ActiveObjectContractTest {
       synchronized (heard) {
         assertThat(heard).containsExactly(r.address() + ":nope");
       }
+    }
+  }
+
+  @ParameterizedTest
+  @EnumSource(Mode.class)
+  void aGuardThatThrowsFailsItsRequestWithoutRunningIt(Mode mode) {
+    try (Harness h = new Harness(mode)) {
+      ActiveObject<Recorder> r = h.spawn(new Recorder());
+      FutureValue<String> f =
+          r.callWhen(
+              x -> {
+                throw new IllegalStateException("guard broke");
+              },
+              x -> {
+                x.add("ran");
+                return "ran anyway";
+              });
+      if (mode == Mode.SYNCHRONOUS) {
+        h.clock.stepUntil(f::isDone, 10);
+      }
+      assertThatThrownBy(() -> f.getValue(Harness.WAIT))
+          .isInstanceOf(RequestFailedException.class)
+          .rootCause()
+          .hasMessage("guard broke");
+      assertThat(h.get(r.call(Recorder::size))).isZero();
+      assertThat(h.errors()).hasSize(1);
     }
   }
 

@@ -251,6 +251,14 @@ class FutureContractTest {
   }
 
   @Test
+  void proxyRefusesAnInterfaceItCouldNotCall() {
+    ActiveObject<Object> hidden = runtime.spawn(org.armgals.active.fixture.Hidden.servant());
+    assertThatThrownBy(() -> hidden.proxy(org.armgals.active.fixture.Hidden.type()))
+        .isInstanceOf(IllegalArgumentException.class)
+        .hasMessageContaining("must be public");
+  }
+
+  @Test
   void proxyRefusesMethodsThatCannotBeAsynchronous() {
     ActiveObject<BadImpl> bad = runtime.spawn(new BadImpl());
     assertThatThrownBy(() -> bad.proxy(Bad.class))

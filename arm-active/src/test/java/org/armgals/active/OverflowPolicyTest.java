@@ -173,6 +173,34 @@ class OverflowPolicyTest {
   }
 
   @org.junit.jupiter.api.Test
+  void aSenderBlockedOnAnObjectThatIsStoppedGetsObjectStoppedAtOnce() throws Exception {
+    try (Harness h = new Harness(Mode.ASYNCHRONOUS)) {
+      ActiveObject<Gate> gate =
+          h.runtime.spawn(
+              new Gate(), config(h, 1, OverflowPolicy.block(Duration.ofMinutes(5)), new Drops()));
+      CountDownLatch started = new CountDownLatch(1);
+      CountDownLatch release = new CountDownLatch(1);
+      gate.send(
+          g -> {
+            started.countDown();
+            release.await();
+          });
+      started.await();
+      gate.send(g -> g.passed.add(1)); // fills the buffer of one
+      CompletableFuture<Void> blocked =
+          CompletableFuture.runAsync(
+              () -> gate.send(g -> g.passed.add(2)), r -> Thread.ofVirtual().start(r));
+      assertThatThrownBy(() -> blocked.get(100, TimeUnit.MILLISECONDS))
+          .isInstanceOf(java.util.concurrent.TimeoutException.class);
+      gate.stop();
+      assertThatThrownBy(() -> blocked.get(10, TimeUnit.SECONDS))
+          .cause()
+          .isInstanceOf(ObjectStoppedException.class);
+      release.countDown();
+    }
+  }
+
+  @org.junit.jupiter.api.Test
   void blockPolicyGivesUpAfterItsTimeout() {
     try (Harness h = new Harness(Mode.ASYNCHRONOUS)) {
       ActiveObject<Gate> gate =

@@ -44,7 +44,8 @@ class RuntimeTest {
     ActiveRuntime rt = ActiveRuntime.builder().jmx(false).build();
     ActiveObject<Cell> cell = rt.spawn(new Cell());
     FutureValue<Integer> never = cell.callWhen(c -> c.open, c -> 1);
-    assertThat(rt.shutdown(ShutdownMode.DRAIN, Duration.ofSeconds(10))).isTrue();
+    // false: the guarded request had to be discarded
+    assertThat(rt.shutdown(ShutdownMode.DRAIN, Duration.ofSeconds(10))).isFalse();
     assertThatThrownBy(() -> never.getValue(Duration.ofSeconds(10)))
         .isInstanceOf(ObjectStoppedException.class);
   }
@@ -164,6 +165,54 @@ class RuntimeTest {
           .isInstanceOf(UnsupportedOperationException.class)
           .hasMessageContaining("another runtime");
       assertThat(here.<Cell>ref(sender.address())).isSameAs(sender);
+    }
+  }
+
+  @Test
+  void anObjectStoppedByItsOwnEventDiscardsTheRestOfItsBuffer() {
+    try (ActiveRuntime rt = ActiveRuntime.builder().workers(1).jmx(false).build()) {
+      ActiveObject<Cell> cell = rt.spawn(new Cell());
+      CountDownLatch queued = new CountDownLatch(1);
+      cell.send(
+          c -> {
+            queued.await();
+            ActiveContext.current().orElseThrow().stop();
+          });
+      List<FutureValue<Integer>> after = new ArrayList<>();
+      for (int i = 0; i < 10; i++) {
+        after.add(cell.call(c -> ++c.value));
+      }
+      queued.countDown();
+      for (FutureValue<Integer> f : after) {
+        assertThatThrownBy(() -> f.getValue(Duration.ofSeconds(10)))
+            .isInstanceOf(ObjectStoppedException.class);
+      }
+    }
+  }
+
+  @Test
+  void aManualClockSteppedFromAnAsynchronousObjectDoesNotStarveTheWorkers() {
+    try (ActiveRuntime rt = ActiveRuntime.builder().workers(1).jmx(false).build();
+        ManualClock clock = Clock.manual(Duration.ofMillis(1))) {
+      AtomicInteger cycles = new AtomicInteger();
+      rt.spawn(
+          (ReactiveCycle) instant -> cycles.incrementAndGet(), ObjectConfig.synchronous(clock));
+      ActiveObject<Cell> driver = rt.spawn(new Cell());
+      driver.signal(c -> clock.step(5)).touch(Duration.ofSeconds(10));
+      assertThat(cycles.get()).isEqualTo(5);
+    }
+  }
+
+  @Test
+  void aWorkerEndedByAFatalErrorIsReplaced() {
+    try (ActiveRuntime rt = ActiveRuntime.builder().workers(1).jmx(false).build()) {
+      ActiveObject<Cell> doomed = rt.spawn(new Cell());
+      doomed.send(
+          c -> {
+            throw new StackOverflowError("fatal, on purpose");
+          });
+      ActiveObject<Cell> other = rt.spawn(new Cell());
+      assertThat(other.call(c -> 7).getValue(Duration.ofSeconds(10))).isEqualTo(7);
     }
   }
 

@@ -173,6 +173,66 @@ class SynchronousModeTest {
     }
   }
 
+  /** A reactive servant that also takes events: it hears its replies as FutureEvents. */
+  static final class Listener implements EventProcessor, ReactiveCycle {
+    final ActiveRef<Oracle> oracle;
+    final List<String> heard = new ArrayList<>();
+
+    Listener(ActiveRef<Oracle> oracle) {
+      this.oracle = oracle;
+    }
+
+    @Override
+    public void process(Event event) {
+      if (event instanceof FutureEvent f) {
+        heard.add("reply " + f.value() + " from " + f.sender());
+      }
+    }
+
+    @Override
+    public void onCycle(long instant) {
+      if (instant == 1) {
+        FutureValue<Integer> f = oracle.call(o -> o.answer);
+        assertThatThrownBy(() -> f.getValue(Duration.ofSeconds(-1)))
+            .isInstanceOf(IllegalArgumentException.class);
+      }
+    }
+  }
+
+  @Test
+  void repliesReachAnEventProcessorServantAsFutureEvents() {
+    try (ManualClock clock = Clock.manual(Duration.ofMillis(1));
+        ActiveRuntime rt = ActiveRuntime.builder().jmx(false).build()) {
+      ActiveObject<Oracle> oracle = rt.spawn(new Oracle(), ObjectConfig.synchronous(clock));
+      Listener listener = new Listener(oracle);
+      rt.spawn(listener, ObjectConfig.synchronous(clock));
+      clock.step(3);
+      assertThat(listener.heard).containsExactly("reply 42 from " + oracle.address());
+    }
+  }
+
+  @Test
+  void aReactiveObjectStoppedByAnEventTakesNoMoreEventsAndNoCycle() {
+    try (ManualClock clock = Clock.manual(Duration.ofMillis(1));
+        ActiveRuntime rt = ActiveRuntime.builder().jmx(false).build()) {
+      List<String> log = new ArrayList<>();
+      final class Quitter implements ReactiveCycle {
+        @Override
+        public void onCycle(long instant) {
+          log.add("cycle " + instant);
+        }
+      }
+      ActiveObject<Quitter> q = rt.spawn(new Quitter(), ObjectConfig.synchronous(clock));
+      q.send(x -> log.add("first"));
+      q.send(x -> ActiveContext.current().orElseThrow().stop());
+      FutureValue<Boolean> third = q.call(x -> log.add("third"));
+      clock.step(2);
+      assertThat(log).containsExactly("first");
+      assertThatThrownBy(() -> third.getValue(Duration.ofSeconds(10)))
+          .isInstanceOf(ObjectStoppedException.class);
+    }
+  }
+
   @Test
   void aReactiveObjectCannotWaitByNecessity() {
     try (ManualClock clock = Clock.manual(Duration.ofMillis(1));

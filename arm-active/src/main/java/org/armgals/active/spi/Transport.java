@@ -8,8 +8,8 @@ import org.armgals.active.Event;
  * between objects of one runtime are handed over in memory, never serialized); it uses it for every
  * event whose destination names another runtime.
  *
- * <p>{@link Transport#inJvm()} links runtimes of one JVM; the JMS transport over Apache ActiveMQ
- * Artemis implements the same interface for runtimes in other JVMs.
+ * <p>{@link Transport#inJvm()} links runtimes of one JVM. A transport for runtimes in other JVMs
+ * (JMS over Apache ActiveMQ Artemis, DESIGN.md rule 5) is meant to implement this interface.
  *
  * <p>Threading: {@link #send} is called concurrently by any thread; {@link #attach} and {@link
  * #detach} by the runtime when it starts and stops.

@@ -1,0 +1,187 @@
+package org.armgals.examples;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import com.tngtech.archunit.core.domain.JavaClasses;
+import com.tngtech.archunit.core.importer.ClassFileImporter;
+import com.tngtech.archunit.core.importer.ImportOption;
+import java.util.List;
+import org.armgals.active.ActiveContext;
+import org.armgals.active.ActiveException;
+import org.armgals.active.ActiveObject;
+import org.armgals.active.ActiveRef;
+import org.armgals.active.ActiveRuntime;
+import org.armgals.active.ActiveRuntimeMXBean;
+import org.armgals.active.Address;
+import org.armgals.active.BufferFullException;
+import org.armgals.active.Callable;
+import org.armgals.active.Clock;
+import org.armgals.active.ClockStats;
+import org.armgals.active.Event;
+import org.armgals.active.EventProcessor;
+import org.armgals.active.Future;
+import org.armgals.active.FutureEvent;
+import org.armgals.active.FutureInterruptedException;
+import org.armgals.active.FutureNotAvailableException;
+import org.armgals.active.FutureTimeoutException;
+import org.armgals.active.FutureValue;
+import org.armgals.active.Guard;
+import org.armgals.active.ManualClock;
+import org.armgals.active.MethodRequest;
+import org.armgals.active.Mode;
+import org.armgals.active.ObjectConfig;
+import org.armgals.active.ObjectStoppedException;
+import org.armgals.active.OverflowPolicy;
+import org.armgals.active.ReactiveCycle;
+import org.armgals.active.RealTimeClock;
+import org.armgals.active.RequestFailedException;
+import org.armgals.active.RuntimeStats;
+import org.armgals.active.ServantAction;
+import org.armgals.active.ServantFunction;
+import org.armgals.active.ShutdownMode;
+import org.armgals.active.SynchronizedMethodRequest;
+import org.armgals.active.SynchronousFuture;
+import org.armgals.active.SynchronousFutureValue;
+import org.armgals.active.TimeSource;
+import org.armgals.active.WaitCycleException;
+import org.armgals.active.spi.ErrorHandler;
+import org.armgals.active.spi.ObjectListener;
+import org.armgals.active.spi.Transport;
+import org.armgals.examples.archfixture.alpha.Api;
+import org.junit.jupiter.api.Test;
+
+/**
+ * DESIGN.md's module boundaries, over every armgals class on this module's class path (examples
+ * depends on all modules): no module reaches another's {@code .internal} package, and arm-active
+ * exports exactly its documented API.
+ */
+class ModuleBoundariesTest {
+
+  /** The root package of each module in DESIGN.md. */
+  static final List<String> MODULE_ROOTS =
+      List.of(
+          "org.armgals.active",
+          "org.armgals.representation",
+          "org.armgals.kernel",
+          "org.armgals.gals",
+          "org.armgals.maam",
+          "org.armgals.maam.sim",
+          "org.armgals.examples",
+          "org.armgals.bench");
+
+  /** arm-active's public API: adding a public type means adding it here, on purpose. */
+  static final List<Class<?>> ACTIVE_API =
+      List.of(
+          ActiveContext.class,
+          ActiveException.class,
+          ActiveObject.class,
+          ActiveRef.class,
+          ActiveRuntime.class,
+          ActiveRuntime.Builder.class,
+          ActiveRuntimeMXBean.class,
+          Address.class,
+          BufferFullException.class,
+          Callable.class,
+          Clock.class,
+          ClockStats.class,
+          Event.class,
+          EventProcessor.class,
+          Future.class,
+          FutureEvent.class,
+          FutureInterruptedException.class,
+          FutureNotAvailableException.class,
+          FutureTimeoutException.class,
+          FutureValue.class,
+          Guard.class,
+          ManualClock.class,
+          MethodRequest.class,
+          Mode.class,
+          ObjectConfig.class,
+          ObjectStoppedException.class,
+          OverflowPolicy.class,
+          OverflowPolicy.Block.class,
+          OverflowPolicy.Reject.class,
+          OverflowPolicy.DropNewest.class,
+          OverflowPolicy.DropOldest.class,
+          ReactiveCycle.class,
+          RealTimeClock.class,
+          RequestFailedException.class,
+          RuntimeStats.class,
+          ServantAction.class,
+          ServantFunction.class,
+          ShutdownMode.class,
+          SynchronizedMethodRequest.class,
+          SynchronousFuture.class,
+          SynchronousFutureValue.class,
+          TimeSource.class,
+          WaitCycleException.class,
+          ErrorHandler.class,
+          ObjectListener.class,
+          Transport.class,
+          Transport.Inbound.class);
+
+  private static final JavaClasses ARMGALS =
+      new ClassFileImporter()
+          .withImportOption(ImportOption.Predefined.DO_NOT_INCLUDE_TESTS)
+          .importPackages("org.armgals");
+
+  private static final JavaClasses FIXTURES =
+      new ClassFileImporter().importPackages("org.armgals.examples.archfixture");
+
+  private static final List<String> FIXTURE_ROOTS =
+      List.of("org.armgals.examples.archfixture.alpha", "org.armgals.examples.archfixture.beta");
+
+  @Test
+  void importSeesArmActive() {
+    assertThat(ARMGALS.contain(ActiveRuntime.class)).isTrue();
+    assertThat(ARMGALS.stream().anyMatch(c -> c.getSimpleName().equals("Core"))).isTrue();
+  }
+
+  @Test
+  void noModuleReachesAnotherModulesInternalPackage() {
+    ModuleRules.internalPackagesStayInTheirModule(MODULE_ROOTS).check(ARMGALS);
+  }
+
+  @Test
+  void armActiveExportsOnlyItsApi() {
+    ModuleRules.onlyTheApiIsPublic("org.armgals.active", ACTIVE_API).check(ARMGALS);
+  }
+
+  @Test
+  void internalRuleReportsAReachIntoAnotherModulesInternals() {
+    assertThatThrownBy(
+            () -> ModuleRules.internalPackagesStayInTheirModule(FIXTURE_ROOTS).check(FIXTURES))
+        .isInstanceOf(AssertionError.class)
+        .hasMessageContaining("beta.Leak")
+        .hasMessageContaining("alpha.internal.Secret")
+        .hasMessageNotContaining("alpha.Api.");
+  }
+
+  @Test
+  void internalRuleLetsAModuleUseItsOwnInternals() {
+    ModuleRules.internalPackagesStayInTheirModule(FIXTURE_ROOTS)
+        .check(new ClassFileImporter().importClasses(Api.class));
+  }
+
+  @Test
+  void apiRuleReportsAPublicClassOutsideTheList() {
+    assertThatThrownBy(
+            () ->
+                ModuleRules.onlyTheApiIsPublic(
+                        "org.armgals.examples.archfixture.alpha", List.of(Api.class))
+                    .check(FIXTURES))
+        .isInstanceOf(AssertionError.class)
+        .hasMessageContaining("alpha.Exposed")
+        .hasMessageNotContaining("alpha.Api>");
+  }
+
+  @Test
+  void moduleOfPicksTheLongestRoot() {
+    assertThat(ModuleRules.moduleOf("org.armgals.maam.sim.internal", MODULE_ROOTS))
+        .isEqualTo("org.armgals.maam.sim");
+    assertThat(ModuleRules.moduleOf("org.armgals.maam.internal", MODULE_ROOTS))
+        .isEqualTo("org.armgals.maam");
+    assertThat(ModuleRules.moduleOf("org.armgalsx", MODULE_ROOTS)).isNull();
+  }
+}

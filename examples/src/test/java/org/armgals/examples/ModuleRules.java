@@ -1,0 +1,91 @@
+package org.armgals.examples;
+
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.classes;
+
+import com.tngtech.archunit.base.DescribedPredicate;
+import com.tngtech.archunit.core.domain.Dependency;
+import com.tngtech.archunit.core.domain.JavaClass;
+import com.tngtech.archunit.core.domain.JavaModifier;
+import com.tngtech.archunit.lang.ArchCondition;
+import com.tngtech.archunit.lang.ArchRule;
+import com.tngtech.archunit.lang.ConditionEvents;
+import com.tngtech.archunit.lang.SimpleConditionEvent;
+import java.util.Collection;
+import java.util.List;
+import java.util.Set;
+import java.util.stream.Collectors;
+import org.jspecify.annotations.Nullable;
+
+/** The ArchUnit rules behind DESIGN.md's module boundaries, parameterized so they can be tested. */
+final class ModuleRules {
+  private ModuleRules() {}
+
+  /**
+   * No class reaches the {@code .internal} package of another module. A class belongs to the module
+   * whose root package is the longest prefix of its own ({@code org.armgals.maam.sim.X} to
+   * maam-sim, not maam-framework).
+   */
+  static ArchRule internalPackagesStayInTheirModule(List<String> moduleRoots) {
+    return classes()
+        .should(notReachAnotherModulesInternals(moduleRoots))
+        .because("DESIGN.md: .internal holds the rest and is never reached from another module");
+  }
+
+  /**
+   * In {@code rootPackage} and its subpackages except {@code .internal}, every public class is one
+   * of {@code api}; all others stay package-private (STYLE.md rule 1: export little).
+   */
+  static ArchRule onlyTheApiIsPublic(String rootPackage, Collection<Class<?>> api) {
+    Set<String> names = api.stream().map(Class::getName).collect(Collectors.toSet());
+    DescribedPredicate<JavaClass> inApi =
+        DescribedPredicate.describe("in the public API list", c -> names.contains(c.getName()));
+    return classes()
+        .that()
+        .resideInAPackage(rootPackage + "..")
+        .and()
+        .resideOutsideOfPackage("..internal..")
+        .and(DescribedPredicate.not(inApi))
+        .should()
+        .notHaveModifier(JavaModifier.PUBLIC)
+        .because("STYLE.md rule 1: implementations are package-private; the API list is deliberate")
+        .allowEmptyShould(true);
+  }
+
+  private static ArchCondition<JavaClass> notReachAnotherModulesInternals(List<String> roots) {
+    return new ArchCondition<>("not reach the .internal package of another module") {
+      @Override
+      public void check(JavaClass source, ConditionEvents events) {
+        String from = moduleOf(source.getPackageName(), roots);
+        for (Dependency d : source.getDirectDependenciesFromSelf()) {
+          String target = d.getTargetClass().getBaseComponentType().getPackageName();
+          if (!isInternal(target)) {
+            continue;
+          }
+          String to = moduleOf(target, roots);
+          if (to != null && !to.equals(from)) {
+            events.add(
+                SimpleConditionEvent.violated(
+                    d,
+                    "module " + from + " reaches " + to + "'s internals: " + d.getDescription()));
+          }
+        }
+      }
+    };
+  }
+
+  static boolean isInternal(String pkg) {
+    return pkg.endsWith(".internal") || pkg.contains(".internal.");
+  }
+
+  /** The longest module root that {@code pkg} lies in, or null outside every module. */
+  static @Nullable String moduleOf(String pkg, List<String> roots) {
+    String best = null;
+    for (String r : roots) {
+      if ((pkg.equals(r) || pkg.startsWith(r + "."))
+          && (best == null || r.length() > best.length())) {
+        best = r;
+      }
+    }
+    return best;
+  }
+}
