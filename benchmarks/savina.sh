@@ -1,0 +1,109 @@
+#!/usr/bin/env bash
+# Runs the Savina-style suite: benchmarks/savina.sh [--impl armgals|pekko|both] [name...]
+#
+#   name       pingpong counting threadring fjthrput creation futurertt mem (default: all)
+#   --impl     which implementation(s) to run; default armgals
+#   --warmup n, --warmup-seconds s   warm up each workload by at least n runs (default 2) and
+#              s seconds (default 5); --runs n   measured runs (default 3)
+#   --no-build use benchmarks/target/benchmarks.jar as it is
+#
+# Builds benchmarks/target/benchmarks.jar with the Maven wrapper, then runs each workload of each
+# implementation in a JVM of its own, both implementations of a workload back to back, on a JDK
+# >= 21 (JAVA_HOME if it is one, else the newest under /usr/lib/jvm) with the same JVM options
+# for both: SAVINA_JAVA_OPTS, default "-Xms4g -Xmx4g". Sizes are overridden with
+# -Dsavina.<key>=<n> in SAVINA_JAVA_OPTS (see Sizes.java). Prints one line per run (see
+# docs/benchmarks.md); exits non-zero if a run fails its check.
+set -euo pipefail
+
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(dirname "$here")"
+jar="$here/target/benchmarks.jar"
+
+impls=(armgals)
+names=()
+warmup=2
+warmup_seconds=5
+runs=3
+build=1
+while (($#)); do
+  case "$1" in
+    --impl)
+      case "${2:-}" in
+        armgals | pekko) impls=("$2") ;;
+        both) impls=(armgals pekko) ;;
+        *) echo "savina.sh: --impl takes armgals, pekko or both, not '${2:-}'" >&2; exit 2 ;;
+      esac
+      shift 2 ;;
+    --warmup) warmup="${2:?--warmup needs a count}"; shift 2 ;;
+    --warmup-seconds) warmup_seconds="${2:?--warmup-seconds needs a count}"; shift 2 ;;
+    --runs) runs="${2:?--runs needs a count}"; shift 2 ;;
+    --no-build) build=0; shift ;;
+    -h | --help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "savina.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
+    *) names+=("$1"); shift ;;
+  esac
+done
+if ((${#names[@]} == 0)); then
+  names=(pingpong counting threadring fjthrput creation futurertt mem)
+fi
+
+# The major version of the JDK at $1, or nothing if it is not a JDK.
+jdk_major() {
+  local home="$1" version=""
+  [[ -x "$home/bin/java" ]] || return 0
+  if [[ -f "$home/release" ]]; then
+    version="$(sed -n 's/^JAVA_VERSION="\(.*\)"/\1/p' "$home/release")"
+  fi
+  if [[ -z "$version" ]]; then
+    version="$("$home/bin/java" -XshowSettings:properties -version 2>&1 |
+      sed -n 's/^ *java\.specification\.version = //p')"
+  fi
+  version="${version#1.}"
+  echo "${version%%[.+-]*}"
+}
+
+find_java() {
+  local best="" best_major=0 home major
+  if [[ -n "${JAVA_HOME:-}" ]]; then
+    major="$(jdk_major "$JAVA_HOME")"
+    if [[ -n "$major" ]] && ((major >= 21)); then
+      echo "$JAVA_HOME/bin/java"
+      return
+    fi
+  fi
+  for home in /usr/lib/jvm/*/; do
+    home="${home%/}"
+    [[ -L "$home" ]] && continue
+    major="$(jdk_major "$home")"
+    if [[ -n "$major" ]] && ((major > best_major)); then
+      best="$home"
+      best_major="$major"
+    fi
+  done
+  if ((best_major < 21)); then
+    echo "savina.sh: no JDK >= 21 (JAVA_HOME=${JAVA_HOME:-unset}, nothing newer under /usr/lib/jvm)" >&2
+    exit 1
+  fi
+  echo "$best/bin/java"
+}
+
+java="$(find_java)"
+if ((build)); then
+  (cd "$root" && ./mvnw -B -q -pl benchmarks -am package -DskipTests) >&2
+fi
+[[ -f "$jar" ]] || { echo "savina.sh: $jar is missing; run without --no-build" >&2; exit 1; }
+
+read -r -a opts <<<"${SAVINA_JAVA_OPTS:--Xms4g -Xmx4g}"
+if (($(jdk_major "$(dirname "$(dirname "$java")")") >= 23)); then
+  # Pekko still uses sun.misc.Unsafe; say it is allowed, as it is by default, without the warning.
+  opts+=(--sun-misc-unsafe-memory-access=allow)
+fi
+echo "# $("$java" -version 2>&1 | head -1); options: ${opts[*]}; $(nproc) cores" >&2
+# Workload outside, implementation inside: on a shared, noisy machine the two implementations of
+# one workload then run minutes apart at most, under much the same load.
+for name in "${names[@]}"; do
+  for impl in "${impls[@]}"; do
+    "$java" "${opts[@]}" -cp "$jar" org.armgals.bench.savina.Savina \
+      --impl "$impl" --warmup "$warmup" --warmup-seconds "$warmup_seconds" --runs "$runs" "$name"
+  done
+done
