@@ -58,16 +58,21 @@ final class Dispatcher {
     /** This worker's current spin length; read and written by the worker only. */
     long spinNanos = MAX_SPIN_NANOS / 4;
 
+    /** Events processed by this worker: written by it only (release), summed by stats. */
+    volatile long processed;
+
     Worker(Dispatcher dispatcher) {
       this.dispatcher = dispatcher;
     }
   }
 
   private static final VarHandle NEXT;
+  private static final VarHandle PROCESSED;
 
   static {
     try {
       NEXT = MethodHandles.lookup().findVarHandle(Worker.class, "next", Core.class);
+      PROCESSED = MethodHandles.lookup().findVarHandle(Worker.class, "processed", long.class);
     } catch (ReflectiveOperationException e) {
       throw new ExceptionInInitializerError(e);
     }
@@ -76,6 +81,8 @@ final class Dispatcher {
   private final String name;
   private final int parallelism;
   private final RunQueue runQueue = new RunQueue();
+  private final java.util.concurrent.atomic.LongAdder processedElsewhere =
+      new java.util.concurrent.atomic.LongAdder();
   private final int maxSpinners;
   private final ConcurrentLinkedQueue<Worker> idle = new ConcurrentLinkedQueue<>();
   private final Set<Worker> workers = ConcurrentHashMap.newKeySet();
@@ -119,7 +126,9 @@ final class Dispatcher {
     if (w != null && w.dispatcher == this) {
       Core<?> displaced = (Core<?>) NEXT.getAndSet(w, core);
       if (displaced == null) {
-        wakeIfNoneSpinning();
+        // No wake-up: this worker runs it next. Waking another one here only made it spin on
+        // this slot (measured: thread ring and ping-pong 40-65% faster without). A spinning
+        // worker still steals it, and a worker about to block hands it over.
         return;
       }
       core = displaced;
@@ -260,6 +269,7 @@ final class Dispatcher {
       if (n != null) {
         requeue(n);
       }
+      processedElsewhere.add(w.processed); // a retired worker's count stays in the total
       workers.remove(w);
       snapshot = workers.toArray(new Worker[0]);
       signalIfDraining();
@@ -365,6 +375,29 @@ final class Dispatcher {
   /** How many worker threads are inside their loop. */
   int liveWorkers() {
     return workers.size();
+  }
+
+  /**
+   * Counts {@code n} events processed by the calling thread: on a worker, in its own field (no
+   * shared write per activation); elsewhere (a thread driving the dispatcher by hand) in a shared
+   * adder.
+   */
+  void countProcessed(int n) {
+    Worker w = CURRENT_WORKER.get();
+    if (w != null && w.dispatcher == this) {
+      PROCESSED.setRelease(w, w.processed + n);
+    } else {
+      processedElsewhere.add(n);
+    }
+  }
+
+  /** Events processed so far, by live workers, retired ones and other threads. */
+  long processed() {
+    long sum = processedElsewhere.sum();
+    for (Worker w : snapshot) {
+      sum += w.processed;
+    }
+    return sum;
   }
 
   // ---------------------------------------------------------------- shutdown

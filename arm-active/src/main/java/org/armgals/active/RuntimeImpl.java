@@ -32,7 +32,6 @@ final class RuntimeImpl implements ActiveRuntime {
   private final ObjectTable objects = new ObjectTable();
   private final Set<ClockSupport> clocks = ConcurrentHashMap.newKeySet();
   private final AtomicInteger phase = new AtomicInteger(RUNNING);
-  private final LongAdder processed = new LongAdder();
   private final LongAdder dropped = new LongAdder();
   private final LongAdder rejected = new LongAdder();
   private final LongAdder failures = new LongAdder();
@@ -139,7 +138,7 @@ final class RuntimeImpl implements ActiveRuntime {
 
   void countProcessed(int n) {
     if (n > 0) {
-      processed.add(n);
+      dispatcher.countProcessed(n);
     }
   }
 
@@ -185,7 +184,7 @@ final class RuntimeImpl implements ActiveRuntime {
         objects.size(),
         queued,
         max,
-        processed.sum(),
+        dispatcher.processed(),
         dropped.sum(),
         rejected.sum(),
         failures.sum(),
@@ -279,7 +278,7 @@ final class RuntimeImpl implements ActiveRuntime {
 
     @Override
     public long getProcessed() {
-      return processed.sum();
+      return dispatcher.processed();
     }
 
     @Override
