@@ -62,8 +62,6 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   // consumer only
   private Envelope head;
   private @Nullable Envelope deferredHead;
-  private @Nullable Envelope deferredTail;
-  private int deferredCount;
   private boolean dirty;
 
   /** The envelope whose guard threw, and what it threw: it fails instead of running. */
@@ -76,11 +74,8 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   /** Written by this object's own thread only: numbers what it sends. */
   private long sendSeq;
 
-  /** Synchronous mode only: what the clock's release fixed. Null for asynchronous objects. */
-  private final @Nullable Instant instant;
-
   /** The state of a synchronous object between its clock's two release phases. */
-  private static final class Instant {
+  static final class Instant {
     /** The last event linked at the last release: the instant takes it and all before it. */
     @Nullable Envelope releasedTail;
 
@@ -105,13 +100,12 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   }
 
   Core(RuntimeImpl runtime, long id, S servant, ObjectConfig config) {
-    super(id);
+    super(id, config.mode() == Mode.SYNCHRONOUS ? new Instant() : null);
     this.runtime = runtime;
     this.servant = servant;
     this.config = config;
     this.locked =
         config.overflow() instanceof OverflowPolicy.DropOldest ? new LockedBuffer() : null;
-    this.instant = config.mode() == Mode.SYNCHRONOUS ? new Instant() : null;
     Envelope stub = new Stub();
     this.head = stub;
     this.tail = stub;
@@ -595,7 +589,6 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       deferredTail.deferredNext = e;
     }
     deferredTail = e;
-    deferredCount++;
   }
 
   private void unlinkDeferred(@Nullable Envelope prev, Envelope d) {
@@ -609,7 +602,6 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       deferredTail = prev;
     }
     d.deferredNext = null;
-    deferredCount--;
   }
 
   /** Stopped: discard everything queued, failing the futures. */
@@ -625,7 +617,6 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       }
       deferredHead = null;
       deferredTail = null;
-      deferredCount = 0;
       for (Envelope e = pollInboxToTail(); e != null; e = pollInboxToTail()) {
         all.add(e);
       }
@@ -772,7 +763,6 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       }
       deferredHead = null;
       deferredTail = null;
-      deferredCount = 0;
       Envelope last = java.util.Objects.requireNonNull(instant).releasedTail;
       if (last != null && last != head) {
         for (Envelope e = pollInboxToTail(); e != null; e = pollInboxToTail()) {

@@ -20,14 +20,21 @@ abstract class SenderSidePadding extends SenderSide {
   /** The future this object's thread waits on, for wait-for cycle detection. */
   volatile @Nullable ValueFuture<?> waitingFor;
 
-  // 20 bytes of fields above; 44 of padding complete the 64.
+  /** Synchronous mode only: what the clock's release fixed; null for asynchronous objects. */
+  final Core.@Nullable Instant instant;
+
+  /** The last of the object's deferred events (touched only when an event is deferred). */
+  @Nullable Envelope deferredTail;
+
+  // 28 bytes of fields above; 36 of padding complete the 64.
   @SuppressWarnings("unused")
-  private long p1, p2, p3, p4, p5;
+  private long p1, p2, p3, p4;
 
   @SuppressWarnings("unused")
-  private int p6;
+  private int p5;
 
-  SenderSidePadding(long id) {
+  SenderSidePadding(long id, Core.@Nullable Instant instant) {
     this.id = id;
+    this.instant = instant;
   }
 }
