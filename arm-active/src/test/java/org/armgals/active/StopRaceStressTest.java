@@ -148,9 +148,9 @@ class StopRaceStressTest {
    * must reach zero.
    */
   private static void awaitEmpty(ActiveObject<?> object) {
-    long deadline = System.nanoTime() + PATIENCE.toNanos();
+    long deadline = TimeSource.system().nanoTime() + PATIENCE.toNanos();
     while (object.queueDepth() != 0) {
-      if (System.nanoTime() - deadline > 0) {
+      if (TimeSource.system().nanoTime() - deadline > 0) {
         throw new AssertionError(
             object.address() + " still counts " + object.queueDepth() + " queued events");
       }

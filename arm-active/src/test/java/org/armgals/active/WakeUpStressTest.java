@@ -68,9 +68,9 @@ class WakeUpStressTest {
   private static void pingPong(ActiveObject<Progress> object, Progress progress, int thread) {
     for (int seq = 1; seq <= EVENTS_PER_SENDER; seq++) {
       object.send(new Tagged(object.address(), thread, seq));
-      long deadline = System.nanoTime() + PATIENCE.toNanos();
+      long deadline = TimeSource.system().nanoTime() + PATIENCE.toNanos();
       while (progress.processed.get(thread) < seq) {
-        if (System.nanoTime() - deadline > 0) {
+        if (TimeSource.system().nanoTime() - deadline > 0) {
           throw new AssertionError(
               "lost wake-up: event "
                   + seq

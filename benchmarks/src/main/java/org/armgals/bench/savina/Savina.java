@@ -81,7 +81,7 @@ public final class Savina {
       }
     } catch (Exception e) {
       // A failed check must end the JVM even if a runtime left non-daemon threads behind.
-      e.printStackTrace();
+      org.slf4j.LoggerFactory.getLogger(Savina.class).error("savina: the run failed", e);
       System.exit(1);
     }
     // Lingering non-daemon threads of a runtime must not keep a finished run alive.
