@@ -39,6 +39,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   private static final VarHandle TAIL;
   private static final VarHandle SIZE;
   private static final VarHandle STATE;
+  private static final VarHandle BLOCKED;
   private static final ThreadLocal<@Nullable Core<?>> CURRENT = new ThreadLocal<>();
 
   static {
@@ -47,6 +48,9 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       TAIL = l.findVarHandle(SenderSide.class, "tail", Envelope.class);
       SIZE = l.findVarHandle(SenderSide.class, "size", int.class);
       STATE = l.findVarHandle(Core.class, "state", int.class);
+      BLOCKED =
+          l.findVarHandle(
+              SenderSidePadding.class, "blocked", java.util.concurrent.ConcurrentLinkedQueue.class);
     } catch (ReflectiveOperationException e) {
       throw new ExceptionInInitializerError(e);
     }
@@ -161,9 +165,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   @Override
   public void send(Event event) {
     requireNonNull(event, "event");
-    if (event instanceof SynchronizedMethodRequest<?, ?>) {
-      post((Envelope) event);
-    } else if (event instanceof Envelope e && !(event instanceof Requests.FutureReply)) {
+    if (event instanceof Envelope e && !(event instanceof Requests.FutureReply)) {
       post(e);
     } else {
       if (!(event instanceof Callable<?, ?>) && !address().equals(event.destination())) {
@@ -612,41 +614,31 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
     if (lb != null) {
       lb.drainTo(all);
     } else {
-      for (Envelope d = deferredHead; d != null; d = d.deferredNext) {
-        all.add(d);
-      }
-      deferredHead = null;
-      deferredTail = null;
+      takeDeferred(all);
       for (Envelope e = pollInboxToTail(); e != null; e = pollInboxToTail()) {
         all.add(e);
       }
     }
+    if (lb == null) {
+      SIZE.getAndAdd(this, -all.size());
+    }
     for (Envelope e : all) {
-      if (lb == null) {
-        SIZE.getAndAdd(this, -1);
-      }
       e.abandon(stopped);
       e.clear();
     }
     roomMade();
   }
 
-  // ---------------------------------------------------------------- blocked senders
-
-  private static final VarHandle BLOCKED;
-
-  static {
-    try {
-      BLOCKED =
-          MethodHandles.lookup()
-              .findVarHandle(
-                  SenderSidePadding.class,
-                  "blocked",
-                  java.util.concurrent.ConcurrentLinkedQueue.class);
-    } catch (ReflectiveOperationException e) {
-      throw new ExceptionInInitializerError(e);
+  /** Moves the deferred events, oldest first, into {@code into}; the deferred list is empty. */
+  private void takeDeferred(List<Envelope> into) {
+    for (Envelope d = deferredHead; d != null; d = d.deferredNext) {
+      into.add(d);
     }
+    deferredHead = null;
+    deferredTail = null;
   }
+
+  // ---------------------------------------------------------------- blocked senders
 
   /** Parks the sender until there may be room, the object stopped, or the deadline passed. */
   private boolean awaitRoom(long deadline) {
@@ -758,11 +750,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
     if (lb != null) {
       lb.takeReleased(batch);
     } else {
-      for (Envelope d = deferredHead; d != null; d = d.deferredNext) {
-        batch.add(d);
-      }
-      deferredHead = null;
-      deferredTail = null;
+      takeDeferred(batch);
       Envelope last = java.util.Objects.requireNonNull(instant).releasedTail;
       if (last != null && last != head) {
         for (Envelope e = pollInboxToTail(); e != null; e = pollInboxToTail()) {

@@ -6,6 +6,12 @@ import org.jspecify.annotations.Nullable;
 final class Requests {
   private Requests() {}
 
+  /** Whether a lambda request's guard (none: always) holds for {@code servant}. */
+  @SuppressWarnings("unchecked")
+  private static <S> boolean holds(@Nullable Guard<? super S> guard, Object servant) {
+    return guard == null || guard.test((S) servant);
+  }
+
   /** A one-way request from {@link ActiveRef#send(ServantAction)}. */
   static final class Action<S> extends Envelope {
     private @Nullable ServantAction<? super S> action;
@@ -17,14 +23,12 @@ final class Requests {
     }
 
     @Override
-    @SuppressWarnings("unchecked")
     boolean processable(Object servant) {
-      Guard<? super S> g = guard;
-      return g == null || g.test((S) servant);
+      return holds(guard, servant);
     }
 
     @Override
-    @SuppressWarnings({"unchecked", "NullAway"})
+    @SuppressWarnings("unchecked")
     void process(Core<?> receiver) throws Exception {
       ServantAction<? super S> a = action;
       if (a != null) {
@@ -57,10 +61,8 @@ final class Requests {
     }
 
     @Override
-    @SuppressWarnings("unchecked")
     boolean processable(Object servant) {
-      Guard<? super S> g = guard;
-      return g == null || g.test((S) servant);
+      return holds(guard, servant);
     }
 
     @Override
