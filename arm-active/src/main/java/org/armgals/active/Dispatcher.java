@@ -108,10 +108,6 @@ final class Dispatcher {
     }
   }
 
-  int workerCount() {
-    return alive.get();
-  }
-
   /**
    * Queues an object that holds its SCHEDULED flag. Any thread. From a worker, the object goes to
    * that worker's {@code next} slot (the one it displaces goes to the shared queue): an object

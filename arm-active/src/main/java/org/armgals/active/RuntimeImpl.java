@@ -303,7 +303,7 @@ final class RuntimeImpl implements ActiveRuntime {
 
     @Override
     public int getWorkers() {
-      return dispatcher.workerCount();
+      return dispatcher.liveWorkers();
     }
   }
 
