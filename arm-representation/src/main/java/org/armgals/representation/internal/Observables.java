@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.Collections;
 import java.util.List;
+import org.jspecify.annotations.Nullable;
 
 /**
  * The values a {@link org.armgals.representation.State#observe()} may hold: {@code String}, {@code
@@ -18,7 +19,10 @@ public final class Observables {
    *
    * @throws IllegalArgumentException naming {@code what} and the value when it is not observable
    */
-  public static Object check(String what, Object value) {
+  public static Object check(String what, @Nullable Object value) {
+    if (value == null) {
+      throw new IllegalArgumentException(what + " is null; expected an observable value");
+    }
     if (value instanceof Collection<?> c) {
       List<Object> copy = new ArrayList<>(c.size());
       for (Object o : c) {
