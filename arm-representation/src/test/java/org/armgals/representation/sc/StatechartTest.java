@@ -321,6 +321,17 @@ class StatechartTest {
   }
 
   @Test
+  void aStepChangesTheCoarseGrainOnlyWhenItLeavesTheCompositeState() {
+    Statechart chart = ScContractTest.CHART;
+    Activation<Configuration> a = start(chart);
+    Step<Configuration> power = a.dispatch("power", null).get(0);
+    Step<Configuration> go = a.dispatch("go", null).get(0);
+    assertThat(chart.changedAt(power, 1)).isTrue();
+    assertThat(chart.changedAt(go, 1)).isFalse();
+    assertThat(chart.changedAt(go, 2)).isTrue();
+  }
+
+  @Test
   void aCoarseObservationKeepsTheHistoryOfTheCurrentState() {
     Statechart chart = Statechart.of(HISTORY);
     Activation<Configuration> a = start(chart);
