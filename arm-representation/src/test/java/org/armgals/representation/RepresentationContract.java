@@ -91,6 +91,21 @@ public abstract class RepresentationContract<S extends State> {
   }
 
   @Test
+  void theNamesAndBehaviorsOfASetCannotBeChangedInPlace() {
+    Behaviors<S> b = behaviors();
+    assertThatThrownBy(() -> b.names().add("x")).isInstanceOf(UnsupportedOperationException.class);
+    assertThatThrownBy(() -> b.all().clear()).isInstanceOf(UnsupportedOperationException.class);
+  }
+
+  @Test
+  void dispatchRefusesANullTrigger() {
+    Activation<S> a = fresh();
+    assertThatThrownBy(() -> a.dispatch(null, null))
+        .isInstanceOf(NullPointerException.class)
+        .hasMessageContaining("trigger");
+  }
+
+  @Test
   void namesAndAllFollowTheOrderBehaviorsWereAdded() {
     Behaviors<S> b = behaviors().with(extra());
     List<String> names = new ArrayList<>(b.names());
