@@ -349,6 +349,23 @@ class StatechartTest {
   }
 
   @Test
+  void aChartWithTooManyConfigurationsToEnumerateRefusesACoarseObservation() {
+    ScNode[] regions = new ScNode[6];
+    for (int r = 0; r < regions.length; r++) {
+      ScNode[] leaves = new ScNode[10];
+      for (int l = 0; l < leaves.length; l++) {
+        leaves[l] = ScNode.state("s" + r + "_" + l);
+      }
+      regions[r] = ScNode.state("r" + r, leaves);
+    }
+    Statechart chart = Statechart.of(ScDefinition.of("wide", ScNode.parallel("P", regions)));
+    assertThat(chart.contains(chart.initialState())).isTrue();
+    assertThatThrownBy(() -> chart.mapToState(Map.of("active", List.of("P")), null))
+        .isInstanceOf(IllegalStateException.class)
+        .hasMessageContaining("100000");
+  }
+
+  @Test
   void badObservationsAreRefusedWithTheCulprit() {
     Statechart chart = Statechart.of(HISTORY);
     assertThatThrownBy(() -> chart.mapToState(Map.of("active", List.of("Nowhere")), null))
