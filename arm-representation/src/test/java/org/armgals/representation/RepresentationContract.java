@@ -8,7 +8,6 @@ import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 import java.util.Set;
 import org.jspecify.annotations.Nullable;
 import org.junit.jupiter.api.Test;
@@ -44,9 +43,6 @@ public abstract class RepresentationContract<S extends State> {
 
   /** A new behavior, not in {@link #behaviors()}, named {@code extra}, applicable initially. */
   protected abstract Behavior<S> extra();
-
-  /** A behavior the family refuses to add, if it has such a thing. */
-  protected abstract Optional<Behavior<S>> foreign();
 
   /** A state that is not in the space. */
   protected abstract S outside();
@@ -137,16 +133,6 @@ public abstract class RepresentationContract<S extends State> {
         .hasMessageContaining("no-such-behavior")
         .satisfies(
             e -> assertThat(((NoSuchBehaviorException) e).name()).isEqualTo("no-such-behavior"));
-  }
-
-  @Test
-  void aBehaviorTheFamilyCannotRunIsRefused() {
-    foreign()
-        .ifPresent(
-            f ->
-                assertThatThrownBy(() -> behaviors().with(f))
-                    .isInstanceOf(IllegalArgumentException.class)
-                    .hasMessageContaining(f.name()));
   }
 
   @Test

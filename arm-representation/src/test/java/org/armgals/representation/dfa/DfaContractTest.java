@@ -2,7 +2,6 @@ package org.armgals.representation.dfa;
 
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 import org.armgals.representation.Behavior;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.RepresentationContract;
@@ -62,12 +61,6 @@ class DfaContractTest extends RepresentationContract<DfaState> {
   }
 
   private static final DfaTransition EXTRA = SPACE.transition("extra", "idle", "crash", "broken");
-
-  @Override
-  protected Optional<Behavior<DfaState>> foreign() {
-    return Optional.of(
-        new DfaTransition("teleport", SPACE.state("idle"), "beam", DfaState.named("nowhere")));
-  }
 
   @Override
   protected DfaState outside() {

@@ -37,6 +37,28 @@ class DfaTest {
   }
 
   @Test
+  void aTransitionToAStateOutsideTheSpaceIsRefusedNamingIt() {
+    DfaTransition teleport =
+        new DfaTransition("teleport", space.state("idle"), "beam", DfaState.named("nowhere"));
+    assertThatThrownBy(() -> space.transitions().with(teleport))
+        .isInstanceOf(IllegalArgumentException.class)
+        .hasMessageContaining("'teleport'")
+        .hasMessageContaining("nowhere");
+    DfaSpace other = DfaSpace.builder().state("idle").state("elsewhere").build();
+    assertThatThrownBy(
+            () ->
+                space.activate(
+                    space.initialState(),
+                    space
+                        .transitions()
+                        .without("start")
+                        .with(other.transition("x", "idle", "go", "elsewhere"))))
+        .isInstanceOf(IllegalArgumentException.class)
+        .hasMessageContaining("'x'")
+        .hasMessageContaining("another space");
+  }
+
+  @Test
   void replacingATransitionByIdIsNotNonDeterminism() {
     DfaTransition rerouted = space.transition("start", "idle", "go", "fast");
     Activation<DfaState> a =

@@ -2,7 +2,6 @@ package org.armgals.representation.p;
 
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 import org.armgals.representation.Behavior;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.RepresentationContract;
@@ -70,11 +69,6 @@ class PContractTest extends RepresentationContract<PState> {
 
   private static final PMethod EXTRA =
       PMethod.of("extra", (s, in) -> s.with("count", (Integer) s.get("count") * 2 + 1));
-
-  @Override
-  protected Optional<Behavior<PState>> foreign() {
-    return Optional.empty();
-  }
 
   @Override
   protected PState outside() {

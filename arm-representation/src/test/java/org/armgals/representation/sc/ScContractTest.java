@@ -2,7 +2,6 @@ package org.armgals.representation.sc;
 
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 import java.util.Set;
 import org.armgals.representation.Behavior;
 import org.armgals.representation.Behaviors;
@@ -86,12 +85,6 @@ class ScContractTest extends RepresentationContract<Configuration> {
 
   private static final Behavior<Configuration> EXTRA =
       CHART.bind(ScTransition.on("extra", "Off", "kick", "On"));
-
-  @Override
-  protected Optional<Behavior<Configuration>> foreign() {
-    Statechart other = Statechart.of(ROBOT, Map.of("near", (c, in) -> false));
-    return Optional.of(other.bind(ScTransition.on("elsewhere", "Off", "kick", "Done")));
-  }
 
   @Override
   protected Configuration outside() {

@@ -380,6 +380,22 @@ class StatechartTest {
   }
 
   @Test
+  void onlyTransitionsBoundToThisChartMayJoinItsBehaviors() {
+    Statechart chart = ScContractTest.CHART;
+    Statechart twin = Statechart.of(ScContractTest.ROBOT, Map.of("near", (c, in) -> false));
+    assertThatThrownBy(
+            () ->
+                chart.transitions().with(twin.bind(ScTransition.on("elsewhere", "Off", "k", "On"))))
+        .isInstanceOf(IllegalArgumentException.class)
+        .hasMessageContaining("'elsewhere'")
+        .hasMessageContaining("bind");
+    Activation<Configuration> a = start(chart);
+    assertThatThrownBy(() -> a.harmonize(twin.transitions()))
+        .isInstanceOf(IllegalArgumentException.class);
+    assertThat(a.behaviors()).isSameAs(chart.transitions());
+  }
+
+  @Test
   void aDefinitionThatDoesNotHoldTogetherIsRefusedWithTheCulprit() {
     assertThatThrownBy(
             () -> Statechart.of(ScDefinition.of("dup", ScNode.state("A", ScNode.state("A")))))
