@@ -8,6 +8,7 @@ import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Random;
 import java.util.Set;
 import org.jspecify.annotations.Nullable;
 import org.junit.jupiter.api.Test;
@@ -304,5 +305,22 @@ public abstract class RepresentationContract<S extends State> {
     assertThat(new LinkedHashSet<>(seen))
         .as("the triggers visit several states")
         .hasSizeGreaterThan(1);
+  }
+
+  @Test
+  void aLongRandomRunReplaysOnAModelAndEveryStateMapsBackFromItsObservation() {
+    Random random = new Random(42);
+    Activation<S> entity = fresh();
+    Activation<S> model = fresh();
+    for (int i = 0; i < 300; i++) {
+      Trigger t = triggers().get(random.nextInt(triggers().size()));
+      for (Step<S> step : entity.dispatch(t.name(), t.input())) {
+        model.apply(step.behavior(), t.input());
+      }
+      assertThat(model.state()).isEqualTo(entity.state());
+      assertThat(space().contains(entity.state())).isTrue();
+      assertThat(space().mapToState(entity.state().observe(), null))
+          .containsExactly(entity.state());
+    }
   }
 }

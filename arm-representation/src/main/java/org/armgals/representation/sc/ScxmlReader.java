@@ -209,7 +209,14 @@ final class ScxmlReader {
             }
             initial = initialChild(child);
           }
-          case "history/transition" -> historyDefault.addAll(targetOnly(child));
+          case "history/transition" -> {
+            if (!historyDefault.isEmpty()) {
+              throw new ScxmlException(
+                  "<history id=\"" + id + "\"> has a second <transition>; expected at most one",
+                  child.line());
+            }
+            historyDefault.addAll(targetOnly(child));
+          }
           default ->
               throw unsupported(child, "what SCXML allows in <" + kind + "> among the subset");
         }

@@ -164,6 +164,27 @@ class ScxmlTest {
   }
 
   @Test
+  void aHistoryWithTwoDefaultTransitionsIsRefused() {
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml">
+                      <state id="A">
+                        <history id="H">
+                          <transition target="A1"/>
+                          <transition target="A2"/>
+                        </history>
+                        <state id="A1"/>
+                        <state id="A2"/>
+                      </state>
+                    </scxml>
+                    """))
+        .hasMessageContaining("second <transition>")
+        .hasMessageContaining("line 5");
+  }
+
+  @Test
   void aStateWithoutIdIsRefused() {
     assertThatThrownBy(
             () ->
