@@ -33,8 +33,9 @@ public interface BehavioralMeta extends Entity {
    * Replaces the filter of {@code entity}'s notifications, a JMS message selector over {@link
    * Notification#properties()} (for example {@code "kind = 'state' AND battery < 0.3"}). The swap
    * is an event of this meta-entity: every notification is judged by exactly one filter, the one in
-   * place when the meta takes it. The future fails with {@link IllegalArgumentException} naming the
-   * selector if it does not parse.
+   * place when the meta takes it. A blank selector accepts everything (the default).
+   *
+   * @throws IllegalArgumentException the selector does not parse (the message quotes it)
    */
   Future setFilter(Entity entity, String selector);
 

@@ -8,9 +8,9 @@ import java.util.Map;
 import java.util.OptionalLong;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.function.Predicate;
 import org.armgals.active.Address;
 import org.armgals.active.Event;
+import org.armgals.active.Filter;
 import org.armgals.active.Future;
 import org.armgals.active.FutureValue;
 import org.armgals.kernel.spi.MetaContext;
@@ -70,7 +70,7 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
       m.entity().object().send(new ResyncRequest(address(), n.entity(), m.lastSeq()));
     }
     publish(m);
-    if (m.filter.test(n.properties())) {
+    if (Selectors.matches(m.filter, n)) {
       policy.onNotification(context, n);
     }
   }
@@ -137,14 +137,13 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
   @Override
   public Future setFilter(Entity entity, String selector) {
     EntityImpl<?> e = kernel.own(entity);
-    Predicate<Map<String, Object>> compiled = Selectors.compile(selector);
-    return object().signal(own -> swapFilter(e.address(), selector, compiled));
+    Filter compiled = Filter.selector(selector);
+    return object().signal(own -> swapFilter(e.address(), compiled));
   }
 
-  private void swapFilter(Address entity, String text, Predicate<Map<String, Object>> compiled) {
+  private void swapFilter(Address entity, Filter compiled) {
     Model<?> m = model(entity);
     m.filter = compiled;
-    m.filterText = text;
     publish(m);
   }
 
@@ -205,7 +204,7 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
 
     @Override
     public void setFilter(Address entity, String selector) {
-      swapFilter(entity, selector, Selectors.compile(selector));
+      swapFilter(entity, Filter.selector(selector));
     }
 
     @Override

@@ -3,6 +3,7 @@ package org.armgals.kernel;
 import static java.util.Objects.requireNonNull;
 
 import java.util.Optional;
+import org.armgals.active.ActiveContext;
 import org.armgals.active.ActiveObject;
 import org.armgals.active.Address;
 import org.armgals.active.Event;
@@ -123,7 +124,8 @@ abstract sealed class EntityImpl<E extends State> implements Entity
   @Override
   public final void send(String trigger, @Nullable Object input) {
     requireNonNull(trigger, "trigger");
-    object().send(new Stimulus(null, address(), trigger, input));
+    Address sender = ActiveContext.current().map(o -> o.address()).orElse(null);
+    object().send(new Stimulus(sender, address(), trigger, input));
   }
 
   @Override

@@ -4,8 +4,8 @@ import static java.util.Objects.requireNonNull;
 
 import java.time.Duration;
 import java.util.Set;
-import java.util.function.Predicate;
 import org.armgals.active.Address;
+import org.armgals.active.Filter;
 import org.armgals.representation.Activation;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.RepresentationException;
@@ -38,8 +38,7 @@ final class Model<S extends State> {
   private long resyncRequests;
   long requestedVersion;
   long appliedVersion;
-  String filterText = "";
-  Predicate<java.util.Map<String, Object>> filter = p -> true;
+  Filter filter = Filter.ALL;
 
   Model(EntityImpl<S> entity, Damping damping, Duration retry, long now) {
     this.entity = requireNonNull(entity, "entity");
@@ -140,7 +139,7 @@ final class Model<S extends State> {
         requestedVersion,
         appliedVersion,
         governor.suppressed(),
-        filterText);
+        filter.expression());
   }
 
   @Override

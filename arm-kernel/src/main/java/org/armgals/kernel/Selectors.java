@@ -1,24 +1,35 @@
 package org.armgals.kernel;
 
-import static java.util.Objects.requireNonNull;
-
+import java.util.LinkedHashMap;
 import java.util.Map;
-import java.util.function.Predicate;
+import org.armgals.active.Filter;
 
-/** Compiles the selectors of behavioral metas' filters (JMS message-selector syntax). */
+/**
+ * The filters of behavioral metas: arm-active's {@link Filter} (JMS message selectors evaluated by
+ * Artemis's own selector implementation) over a notification's properties, keeping only the values
+ * a JMS message property can hold (a list-valued observation is invisible to selectors).
+ */
 final class Selectors {
   private Selectors() {}
 
-  /**
-   * The filter {@code selector} stands for; a blank selector accepts everything.
-   *
-   * @throws IllegalArgumentException if it does not parse, naming it
-   */
-  static Predicate<Map<String, Object>> compile(String selector) {
-    requireNonNull(selector, "selector");
-    if (selector.isBlank()) {
-      return p -> true;
+  static boolean matches(Filter filter, Notification n) {
+    if (filter == Filter.ALL) {
+      return true;
     }
-    throw new IllegalArgumentException("selectors are not available yet: '" + selector + "'");
+    Map<String, Object> p = new LinkedHashMap<>();
+    for (var e : n.properties().entrySet()) {
+      Object v = e.getValue();
+      if (v instanceof String
+          || v instanceof Boolean
+          || v instanceof Byte
+          || v instanceof Short
+          || v instanceof Integer
+          || v instanceof Long
+          || v instanceof Float
+          || v instanceof Double) {
+        p.put(e.getKey(), v);
+      }
+    }
+    return filter.matches(p);
   }
 }
