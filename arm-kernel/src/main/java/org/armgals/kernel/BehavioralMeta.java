@@ -18,8 +18,10 @@ import org.armgals.active.FutureValue;
 public interface BehavioralMeta extends Entity {
 
   /**
-   * Becomes the behavioral meta of {@code entity} (taking it from its previous one). The entity
-   * answers with a complete state event, from which the model starts.
+   * Becomes the behavioral meta of {@code entity} (taking it from its previous one). The future
+   * completes once this meta has made the model and sent the entity its attachment; the entity
+   * switches when it processes the attachment, before any event sent to it after the future
+   * completed, and answers with a complete state event, from which the model starts.
    */
   Future addBaseLevelEntity(Entity entity);
 

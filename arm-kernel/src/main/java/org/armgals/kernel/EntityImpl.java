@@ -81,6 +81,11 @@ abstract sealed class EntityImpl<E extends State> implements Entity
     return requireNonNull(structuralMeta, "structuralMeta");
   }
 
+  /** Returns once its object has processed every event sent to it before. */
+  final void settle() {
+    object().call(s -> Boolean.TRUE).getValue();
+  }
+
   /** Sends its own object a reified behavior of its kind (the kernel describing itself). */
   final void describe(String behavior, String argument) {
     object().send(s -> s.call(behavior, argument));

@@ -84,6 +84,7 @@ final class KernelImpl implements Kernel {
     k.behavioral.describe(KernelBehaviors.NEW_INSTANCE, k.basic.name());
     for (EntityImpl<FieldState> e : List.of(k.structural, k.entity, k.behavioral, k.basic)) {
       k.basic.addBaseLevelEntity(e).touch();
+      e.settle();
     }
     return k;
   }
@@ -136,6 +137,7 @@ final class KernelImpl implements Kernel {
                     parent,
                     StructuralMetaImpl.Makes.ENTITIES));
     basic.addBaseLevelEntity(made).touch();
+    made.settle();
     return made;
   }
 
@@ -151,6 +153,7 @@ final class KernelImpl implements Kernel {
             KERNEL_OPTIONS,
             servant -> new BehavioralMetaImpl(this, name, of, servant, policy, damping));
     basic.addBaseLevelEntity(made).touch();
+    made.settle();
     return made;
   }
 

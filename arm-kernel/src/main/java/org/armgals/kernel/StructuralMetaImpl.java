@@ -180,6 +180,7 @@ final class StructuralMetaImpl<S extends State> extends EntityImpl<FieldState>
             options,
             servant -> new PlainEntity<>(kernel, entityName, this, servant));
     m.addBaseLevelEntity(e).touch();
+    e.settle();
     return e;
   }
 }
