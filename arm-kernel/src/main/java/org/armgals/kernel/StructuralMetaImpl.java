@@ -10,6 +10,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Function;
 import java.util.function.UnaryOperator;
 import org.armgals.active.Future;
+import org.armgals.active.Mode;
 import org.armgals.representation.Behavior;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.State;
@@ -180,7 +181,9 @@ final class StructuralMetaImpl<S extends State> extends EntityImpl<FieldState>
             options,
             servant -> new PlainEntity<>(kernel, entityName, this, servant));
     m.addBaseLevelEntity(e).touch();
-    e.settle();
+    if (options.config().mode() == Mode.ASYNCHRONOUS) {
+      e.settle(); // a reactive entity takes its attachment at its clock's next release
+    }
     return e;
   }
 }
