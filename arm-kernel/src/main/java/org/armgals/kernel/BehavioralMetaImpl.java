@@ -13,9 +13,12 @@ import org.armgals.active.Event;
 import org.armgals.active.Filter;
 import org.armgals.active.Future;
 import org.armgals.active.FutureValue;
+import org.armgals.active.ObjectStoppedException;
 import org.armgals.kernel.spi.MetaContext;
 import org.armgals.kernel.spi.MetaPolicy;
 import org.armgals.representation.State;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
  * A behavioral meta-entity: the models of its base entities, their filters, its policy and the
@@ -23,6 +26,8 @@ import org.armgals.representation.State;
  * other threads (JMX) read.
  */
 final class BehavioralMetaImpl extends EntityImpl<FieldState> implements BehavioralMeta {
+  private static final Logger LOG = LoggerFactory.getLogger(BehavioralMetaImpl.class);
+
   private final MetaPolicy policy;
   private final Damping damping;
   private final Map<Address, Model<?>> models = new LinkedHashMap<>();
@@ -67,7 +72,11 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
     }
     long now = kernel.nanoTime();
     if (m.integrate(n, now)) {
-      m.entity().object().send(new ResyncRequest(address(), n.entity(), m.lastSeq()));
+      try {
+        m.entity().object().send(new ResyncRequest(address(), n.entity(), m.lastSeq()));
+      } catch (ObjectStoppedException e) {
+        LOG.debug("{} is stopped: its model of it stays out of sync", m);
+      }
     }
     publish(m);
     if (Selectors.matches(m.filter, n)) {

@@ -11,11 +11,14 @@ import java.util.function.Function;
 import java.util.function.UnaryOperator;
 import org.armgals.active.Future;
 import org.armgals.active.Mode;
+import org.armgals.active.ObjectStoppedException;
 import org.armgals.representation.Behavior;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.State;
 import org.armgals.representation.StateSpace;
 import org.jspecify.annotations.Nullable;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
  * A structural meta-entity: the space and the behaviors of its instances, and the instances
@@ -33,6 +36,8 @@ final class StructuralMetaImpl<S extends State> extends EntityImpl<FieldState>
     STRUCTURAL_METAS,
     BEHAVIORAL_METAS
   }
+
+  private static final Logger LOG = LoggerFactory.getLogger(StructuralMetaImpl.class);
 
   private final StateSpace<S> space;
   private final Makes makes;
@@ -131,8 +136,10 @@ final class StructuralMetaImpl<S extends State> extends EntityImpl<FieldState>
       Behaviors<S> next = how.apply(behaviors);
       behaviors = next;
       for (EntityImpl<S> instance : instances) {
-        if (!instance.isStopped()) {
+        try {
           instance.object().send(s -> s.harmonize(next));
+        } catch (ObjectStoppedException e) {
+          LOG.debug("{} is stopped: not harmonized", instance);
         }
       }
     }

@@ -133,6 +133,30 @@ class ModelTest extends KernelFixture {
   }
 
   @Test
+  void aStatechartNotifiedAtACoarseGrainLeavesTheModelWithEveryConsistentLeaf() {
+    Family<?> fan = Family.statechart();
+    Recorder policy = new Recorder();
+    BehavioralMeta meta = kernel.newBehavioralMeta("meta", policy, Damping.none());
+    Entity entity =
+        kind(fan)
+            .newEntity(
+                "fan",
+                meta,
+                EntityOptions.defaults()
+                    .withNotification(NotificationPolicy.statesOnly().atDepth(1)));
+    entity.send("on", null);
+    entity.send("faster", null); // on/slow -> on/fast: the same at depth 1, not notified
+    drain(entity);
+
+    ModelView model = meta.model(entity).getValue();
+    assertThat(policy.of(StateEvent.class))
+        .extracting(StateEvent::complete)
+        .containsExactly(true, false); // the attachment snapshot, then "on" at depth 1
+    assertThat(model.state()).isNull();
+    assertThat(model.candidates()).hasSize(2).contains(entity.state());
+  }
+
+  @Test
   void aModelSaysHowStaleItIsByTheKernelsTimeSource() {
     BehavioralMeta meta = kernel.newBehavioralMeta("meta", new Recorder(), Damping.none());
     Entity robot = robotKind().newEntity("r1", meta);
