@@ -176,7 +176,7 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
               m.address(),
               ++seq,
               error.getClass().getName(),
-              String.valueOf(error.getMessage()),
+              error.getMessage() == null ? "" : error.getMessage(),
               event == null ? "" : event.toString()));
     }
   }

@@ -150,6 +150,33 @@ class FlowsTest extends KernelFixture {
   }
 
   @Test
+  void anEntityAddedToAnotherMetaLeavesItsPreviousOneAndADeletedOneHasNoMeta() {
+    BehavioralMeta first = kernel.newBehavioralMeta("first", new Recorder(), Damping.none());
+    BehavioralMeta second = kernel.newBehavioralMeta("second", new Recorder(), Damping.none());
+    Entity robot = robotKind().newEntity("r1", first);
+
+    second.addBaseLevelEntity(robot).touch();
+    drain(robot);
+    drain(first);
+    robot.call("work", 0.5).getValue();
+    drain(second);
+
+    assertThat(robot.behavioralMeta()).containsSame(second);
+    assertThat(first.baseLevelEntities()).isEmpty();
+    assertThat(second.baseLevelEntities()).containsExactly(robot);
+    assertThat(second.model(robot).getValue().state()).isEqualTo(robot.state());
+    assertThatThrownBy(() -> first.model(robot).getValue())
+        .hasRootCauseInstanceOf(IllegalArgumentException.class)
+        .hasRootCauseMessage(
+            robot.address() + " is not a base entity of first; its base entities are []");
+
+    second.deleteBaseLevelEntity(robot).touch();
+    drain(robot);
+    assertThat(robot.behavioralMeta()).isEmpty();
+    assertThat(robot.call("work", 0.1).getValue()).isNull(); // runs, notifying no one
+  }
+
+  @Test
   void aFailureWhileProcessingIsNotifiedToTheBehavioralMeta() {
     Recorder policy = new Recorder();
     BehavioralMeta meta = kernel.newBehavioralMeta("meta", policy, Damping.none());
