@@ -152,25 +152,35 @@ final class MetaRobotImpl implements MetaRobot {
 
   private static void checkInputsFedOnce(List<Schema> schemas, List<Connector> connectors) {
     Map<PortRef, Object> fed = new HashMap<>();
-    for (Schema schema : schemas) {
-      for (Wire wire : schema.wires()) {
-        fed.put(wire.to(), wire);
-      }
-    }
     for (Connector connector : connectors) {
       if (connector instanceof Derivator derivator) {
         Object other = fed.putIfAbsent(derivator.target(), derivator);
         if (other != null) {
-          throw new IllegalArgumentException(
-              derivator
-                  + ": "
-                  + derivator.target()
-                  + " is already fed by "
-                  + other
-                  + ": expected at most one producer per input");
+          throw fedTwice(derivator, other);
         }
       }
     }
+    if (fed.isEmpty()) {
+      return;
+    }
+    for (Schema schema : schemas) {
+      for (Wire wire : schema.wires()) {
+        Object derivator = fed.get(wire.to());
+        if (derivator != null) {
+          throw fedTwice((Derivator) derivator, wire);
+        }
+      }
+    }
+  }
+
+  private static IllegalArgumentException fedTwice(Derivator derivator, Object other) {
+    return new IllegalArgumentException(
+        derivator
+            + ": "
+            + derivator.target()
+            + " is already fed by "
+            + other
+            + ": expected at most one producer per input");
   }
 
   private int indexOf(String schemaName) {

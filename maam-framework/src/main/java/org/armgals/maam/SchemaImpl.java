@@ -16,6 +16,7 @@ final class SchemaImpl implements Schema {
   private final List<BehaviorModule> modules;
   private final List<Wire> wires;
   private final List<BehaviorModule> partialSchedule;
+  private final int[] edges;
 
   private SchemaImpl(String name, List<ReactiveModule> reactiveModules, List<Wire> wires) {
     this.name = name;
@@ -60,11 +61,27 @@ final class SchemaImpl implements Schema {
       }
       graph.edge(index.get(wire.from().module()), index.get(wire.to().module()));
     }
+    int[] sorted = graph.order(what, names::get);
+    int[] position = new int[sorted.length];
     List<BehaviorModule> order = new ArrayList<>(modules.size());
-    for (int i : graph.order(what, names)) {
-      order.add(modules.get(i));
+    for (int p = 0; p < sorted.length; p++) {
+      order.add(modules.get(sorted[p]));
+      position[sorted[p]] = p;
     }
     this.partialSchedule = List.copyOf(order);
+    this.edges = new int[2 * wires.size()];
+    for (int w = 0; w < wires.size(); w++) {
+      edges[2 * w] = position[index.get(wires.get(w).from().module())];
+      edges[2 * w + 1] = position[index.get(wires.get(w).to().module())];
+    }
+  }
+
+  /**
+   * The wires as pairs of positions in the partial schedule, {@code [from0, to0, from1, to1, ...]}:
+   * the scheduler merges schemas without looking names up.
+   */
+  int[] edges() {
+    return edges;
   }
 
   /** This schema with {@code replacement} instead of the module of the same name. */
