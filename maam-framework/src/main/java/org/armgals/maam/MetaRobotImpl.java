@@ -3,9 +3,7 @@ package org.armgals.maam;
 import static java.util.Objects.requireNonNull;
 
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 
 /** {@link MetaRobot}: computes the new program and its schedule before replacing the old one. */
@@ -84,7 +82,6 @@ final class MetaRobotImpl implements MetaRobot {
       }
     }
     Schedule newSchedule = scheduler.schedule(newSchemas, newConnectors);
-    checkInputsFedOnce(newSchemas, newConnectors);
     schemas = List.copyOf(newSchemas);
     connectors = List.copyOf(newConnectors);
     schedule = newSchedule;
@@ -148,39 +145,6 @@ final class MetaRobotImpl implements MetaRobot {
         throw new IllegalArgumentException("schema name '" + schema.name() + "': used twice");
       }
     }
-  }
-
-  private static void checkInputsFedOnce(List<Schema> schemas, List<Connector> connectors) {
-    Map<PortRef, Object> fed = new HashMap<>();
-    for (Connector connector : connectors) {
-      if (connector instanceof Derivator derivator) {
-        Object other = fed.putIfAbsent(derivator.target(), derivator);
-        if (other != null) {
-          throw fedTwice(derivator, other);
-        }
-      }
-    }
-    if (fed.isEmpty()) {
-      return;
-    }
-    for (Schema schema : schemas) {
-      for (Wire wire : schema.wires()) {
-        Object derivator = fed.get(wire.to());
-        if (derivator != null) {
-          throw fedTwice((Derivator) derivator, wire);
-        }
-      }
-    }
-  }
-
-  private static IllegalArgumentException fedTwice(Derivator derivator, Object other) {
-    return new IllegalArgumentException(
-        derivator
-            + ": "
-            + derivator.target()
-            + " is already fed by "
-            + other
-            + ": expected at most one producer per input");
   }
 
   private int indexOf(String schemaName) {

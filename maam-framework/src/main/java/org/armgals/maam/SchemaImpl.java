@@ -7,6 +7,7 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.jspecify.annotations.Nullable;
 
 /** {@link Schema}: checked and partially scheduled by its builder. */
 final class SchemaImpl implements Schema {
@@ -17,6 +18,7 @@ final class SchemaImpl implements Schema {
   private final List<Wire> wires;
   private final List<BehaviorModule> partialSchedule;
   private final int[] edges;
+  private final Map<PortRef, Wire> fed;
 
   private SchemaImpl(String name, List<ReactiveModule> reactiveModules, List<Wire> wires) {
     this.name = name;
@@ -41,7 +43,7 @@ final class SchemaImpl implements Schema {
     }
     this.modules = List.copyOf(byName.values());
     Graph graph = new Graph(modules.size());
-    Map<PortRef, Wire> fed = new HashMap<>();
+    this.fed = new HashMap<>();
     String what = "schema '" + name + "'";
     for (Wire wire : wires) {
       Ports.output(what + ", wire " + wire, wire.from(), byName);
@@ -74,6 +76,11 @@ final class SchemaImpl implements Schema {
       edges[2 * w] = position[index.get(wires.get(w).from().module())];
       edges[2 * w + 1] = position[index.get(wires.get(w).to().module())];
     }
+  }
+
+  /** The wire into input {@code input}, if one of this schema's wires feeds it. */
+  @Nullable Wire wireInto(PortRef input) {
+    return fed.get(input);
   }
 
   /**

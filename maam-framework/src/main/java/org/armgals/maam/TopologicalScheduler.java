@@ -53,8 +53,13 @@ final class TopologicalScheduler implements Scheduler {
       }
       base += schema.modules().size();
     }
+    Map<PortRef, Derivator> derived = new HashMap<>();
     for (Connector connector : connectors) {
       check(connector, index, modules);
+      if (connector instanceof Derivator derivator) {
+        checkFedOnce(
+            derivator, derived, schemas.get(schemaOf[index.get(derivator.target().module())]));
+      }
       graph.edge(index.get(connector.source().module()), index.get(connector.target().module()));
     }
     int[] order = graph.order("the robot's program", i -> modules.get(i).name());
@@ -63,6 +68,24 @@ final class TopologicalScheduler implements Scheduler {
       scheduled[i] = modules.get(order[i]);
     }
     return new Schedule(Arrays.asList(scheduled));
+  }
+
+  /** An input is fed by one wire or one derivator at most. */
+  private static void checkFedOnce(
+      Derivator derivator, Map<PortRef, Derivator> derived, Schema targetSchema) {
+    Object other = derived.putIfAbsent(derivator.target(), derivator);
+    if (other == null) {
+      other = ((SchemaImpl) targetSchema).wireInto(derivator.target());
+    }
+    if (other != null) {
+      throw new IllegalArgumentException(
+          derivator
+              + ": "
+              + derivator.target()
+              + " is already fed by "
+              + other
+              + ": expected at most one producer per input");
+    }
   }
 
   private static void check(
