@@ -1,0 +1,286 @@
+package org.armgals.maam;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.armgals.maam.spi.Body;
+import org.jspecify.annotations.Nullable;
+
+/**
+ * A robot's schedule compiled for running: a {@link Step} per module in order, each output port a
+ * slot, each input port the slot that feeds it, connectors as indexes. One cycle allocates nothing.
+ * A slot holds a signal for the cycle whose number is its stamp, so nothing is cleared between
+ * cycles.
+ *
+ * <p>Threading: the robot's thread only. It is the {@link Inputs} and {@link Outputs} of the module
+ * running, whose step it holds in {@link #current}.
+ */
+final class Plan implements Inputs, Outputs {
+
+  /** Told of a module's failure. */
+  interface Failures {
+    void failed(BehaviorModule module, Exception error);
+  }
+
+  /** Where a robot finds the state of a connector, kept across plans. */
+  interface StateOf {
+    ConnectorState of(Connector connector);
+  }
+
+  private static final int UNFED = -1;
+  private static final int PERCEPTOR = 0;
+  private static final int REACTOR = 1;
+  private static final int ACTUATOR = 2;
+
+  /** The step outside any module's: every port is unknown there. */
+  private static final Step NONE = new Step(null, new Port<?>[0], new Port<?>[0]);
+
+  private final Step[] steps;
+  private final PortRef[] slotRefs;
+  private final @Nullable Signal[] values;
+  private final long[] stamps;
+
+  private Step current;
+  private long cycle;
+  private long now;
+
+  Plan(Schedule schedule, List<Schema> schemas, List<Connector> connectors, StateOf states) {
+    List<BehaviorModule> order = schedule.modules();
+    int n = order.size();
+    steps = new Step[n];
+    Map<String, Step> byName = HashMap.newHashMap(n);
+    Map<PortRef, Integer> slotOf = new HashMap<>();
+    List<PortRef> refs = new ArrayList<>();
+    for (int i = 0; i < n; i++) {
+      BehaviorModule module = order.get(i);
+      Step step =
+          new Step(
+              module,
+              module.inputs().toArray(new Port<?>[0]),
+              module.outputs().toArray(new Port<?>[0]));
+      for (int j = 0; j < step.outPorts.length; j++) {
+        PortRef ref = new PortRef(module.name(), step.outPorts[j]);
+        step.outSlots[j] = refs.size();
+        slotOf.put(ref, refs.size());
+        refs.add(ref);
+      }
+      steps[i] = step;
+      byName.put(module.name(), step);
+    }
+    slotRefs = refs.toArray(new PortRef[0]);
+    values = new Signal[slotRefs.length];
+    stamps = new long[slotRefs.length];
+    for (Schema schema : schemas) {
+      for (Wire wire : schema.wires()) {
+        byName.get(wire.to().module()).feed(wire.to().port(), slotOf.get(wire.from()));
+      }
+    }
+    for (Connector connector : connectors) {
+      Step source = byName.get(connector.source().module());
+      int sourceSlot = slotOf.get(connector.source());
+      Step target = byName.get(connector.target().module());
+      switch (connector) {
+        case Derivator derivator -> target.feed(derivator.target().port(), sourceSlot);
+        case Inhibitor inhibitor -> {
+          ConnectorState state = states.of(inhibitor);
+          source.watches = append(source.watches, new Watch(sourceSlot, state));
+          int input = target.input(inhibitor.target().port());
+          Gate[] gates = target.inGates[input];
+          Gate gate = new Gate(state, inhibitor.hold().toNanos());
+          target.inGates[input] = gates == null ? new Gate[] {gate} : append(gates, gate);
+        }
+        case Suppressor suppressor -> {
+          ConnectorState state = states.of(suppressor);
+          source.watches = append(source.watches, new Watch(sourceSlot, state));
+          target.replaces =
+              append(
+                  target.replaces,
+                  new Replace(slotOf.get(suppressor.target()), state, suppressor.hold().toNanos()));
+        }
+      }
+    }
+    current = NONE;
+  }
+
+  /** Runs every module once, in order, as cycle {@code cycle} at time {@code now}. */
+  void run(long cycle, long now, Body body, Failures failures) {
+    this.cycle = cycle;
+    this.now = now;
+    for (Step step : steps) {
+      current = step;
+      BehaviorModule module = step.module;
+      try {
+        // An int switch with casts: cheaper per step than a pattern switch over the kinds.
+        switch (step.kind) {
+          case PERCEPTOR -> ((Perceptor) module).perceive(body, this);
+          case REACTOR -> ((Reactor) module).react(this, this);
+          default -> ((Actuator) module).act(this, body);
+        }
+      } catch (Exception e) {
+        for (int slot : step.outSlots) {
+          stamps[slot] = 0;
+        }
+        failures.failed(module, e);
+      }
+      for (Watch watch : step.watches) {
+        if (stamps[watch.slot] == cycle) {
+          watch.state.lastActive = now;
+          watch.state.latched = values[watch.slot];
+        }
+      }
+      for (Replace replace : step.replaces) {
+        if (replace.state.holds(now, replace.holdNanos)) {
+          values[replace.slot] = replace.state.latched;
+          stamps[replace.slot] = cycle;
+        }
+      }
+    }
+    current = NONE;
+  }
+
+  /** What was emitted in the last cycle run, after suppression. */
+  List<CycleReport.Emission> emissions() {
+    List<CycleReport.Emission> emitted = new ArrayList<>();
+    for (int slot = 0; slot < stamps.length; slot++) {
+      Signal value = values[slot];
+      if (stamps[slot] == cycle && value != null) {
+        emitted.add(new CycleReport.Emission(slotRefs[slot], value));
+      }
+    }
+    return emitted;
+  }
+
+  /** Replaces the module of the same name; the caller checked its kind and ports. */
+  void replace(BehaviorModule replacement) {
+    for (Step step : steps) {
+      if (step.module != null && step.module.name().equals(replacement.name())) {
+        step.module = replacement;
+      }
+    }
+  }
+
+  @Override
+  @SuppressWarnings("unchecked") // the wiring was type-checked against the ports' types
+  public <S extends Signal> @Nullable S get(Port<S> port) {
+    Step step = current;
+    int j = step.input(port);
+    Gate[] gates = step.inGates[j];
+    if (gates != null) {
+      for (Gate gate : gates) {
+        if (gate.state.holds(now, gate.holdNanos)) {
+          return null;
+        }
+      }
+    }
+    int slot = step.inSlots[j];
+    return slot == UNFED || stamps[slot] != cycle ? null : (S) values[slot];
+  }
+
+  @Override
+  public <S extends Signal> void emit(Port<S> port, S signal) {
+    Step step = current;
+    int j = step.output(port);
+    if (!port.type().isInstance(signal)) {
+      throw new IllegalArgumentException(
+          "output "
+              + port
+              + " of module '"
+              + step.name()
+              + "' takes "
+              + port.type().getName()
+              + ", got "
+              + (signal == null ? "null" : signal.getClass().getName()));
+    }
+    int slot = step.outSlots[j];
+    values[slot] = signal;
+    stamps[slot] = cycle;
+  }
+
+  private static <T> T[] append(T[] array, T element) {
+    T[] longer = Arrays.copyOf(array, array.length + 1);
+    longer[array.length] = element;
+    return longer;
+  }
+
+  /** One module's place in the plan: its ports, their slots, the connectors around it. */
+  private static final class Step {
+    @Nullable BehaviorModule module;
+    final int kind;
+    final Port<?>[] inPorts;
+    final int[] inSlots;
+    final Gate[] @Nullable [] inGates;
+    final Port<?>[] outPorts;
+    final int[] outSlots;
+    Watch[] watches = new Watch[0];
+    Replace[] replaces = new Replace[0];
+
+    Step(@Nullable BehaviorModule module, Port<?>[] inPorts, Port<?>[] outPorts) {
+      this.module = module;
+      this.kind =
+          switch (module) {
+            case Perceptor p -> PERCEPTOR;
+            case Reactor r -> REACTOR;
+            case Actuator a -> ACTUATOR;
+            case null -> -1;
+          };
+      this.inPorts = inPorts;
+      this.inSlots = new int[inPorts.length];
+      Arrays.fill(inSlots, UNFED);
+      this.inGates = new Gate[inPorts.length][];
+      this.outPorts = outPorts;
+      this.outSlots = new int[outPorts.length];
+    }
+
+    String name() {
+      return module == null ? "(none)" : module.name();
+    }
+
+    void feed(Port<?> port, int slot) {
+      inSlots[input(port)] = slot;
+    }
+
+    /** The index of input {@code port}: by identity first, as modules pass their constants. */
+    int input(Port<?> port) {
+      Port<?>[] ports = inPorts;
+      for (int j = 0; j < ports.length; j++) {
+        if (ports[j] == port) {
+          return j;
+        }
+      }
+      for (int j = 0; j < ports.length; j++) {
+        if (ports[j].equals(port)) {
+          return j;
+        }
+      }
+      throw new IllegalArgumentException(
+          "input " + port + " of module '" + name() + "': expected one of " + List.of(inPorts));
+    }
+
+    int output(Port<?> port) {
+      Port<?>[] ports = outPorts;
+      for (int j = 0; j < ports.length; j++) {
+        if (ports[j] == port) {
+          return j;
+        }
+      }
+      for (int j = 0; j < ports.length; j++) {
+        if (ports[j].equals(port)) {
+          return j;
+        }
+      }
+      throw new IllegalArgumentException(
+          "output " + port + " of module '" + name() + "': expected one of " + List.of(outPorts));
+    }
+  }
+
+  /** After its source module ran, marks a connector active if the source emitted. */
+  private record Watch(int slot, ConnectorState state) {}
+
+  /** An inhibitor's hold on an input. */
+  private record Gate(ConnectorState state, long holdNanos) {}
+
+  /** After its target module ran, a suppressor's replacement of an output. */
+  private record Replace(int slot, ConnectorState state, long holdNanos) {}
+}
