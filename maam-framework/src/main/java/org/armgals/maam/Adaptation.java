@@ -1,0 +1,95 @@
+package org.armgals.maam;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.List;
+
+/**
+ * A change to a robot's reactive program, requested by its meta level (paper §5.4: {@code
+ * setScheduling} and {@code changeModule} method requests) and applied by the robot at its {@link
+ * AdaptationPoint}. A request that would break the program (a cycle, an unknown name) is rejected
+ * whole: the program stays as it was.
+ */
+public sealed interface Adaptation {
+
+  /**
+   * Replaces the whole program: a new reactive program for a while (§5.1), completely rescheduled.
+   *
+   * @param schemas in schedule order
+   * @param connectors joining them
+   */
+  record SetScheduling(List<Schema> schemas, List<Connector> connectors) implements Adaptation {
+
+    /** Copies the lists. */
+    public SetScheduling {
+      schemas = List.copyOf(schemas);
+      connectors = List.copyOf(connectors);
+    }
+  }
+
+  /**
+   * Replaces the module of the same name by {@code replacement}, of the same kind and ports; the
+   * schedule and the connectors' state are kept.
+   *
+   * @param replacement the new module
+   */
+  record ChangeModule(BehaviorModule replacement) implements Adaptation {
+
+    /** Checks for null. */
+    public ChangeModule {
+      requireNonNull(replacement, "replacement");
+    }
+  }
+
+  /**
+   * Adds a schema after the others; complete rescheduling.
+   *
+   * @param schema its name not used yet
+   */
+  record AddSchema(Schema schema) implements Adaptation {
+
+    /** Checks for null. */
+    public AddSchema {
+      requireNonNull(schema, "schema");
+    }
+  }
+
+  /**
+   * Removes a schema, and the connectors to or from its modules; complete rescheduling.
+   *
+   * @param name the schema's name
+   */
+  record RemoveSchema(String name) implements Adaptation {
+
+    /** Checks for null. */
+    public RemoveSchema {
+      requireNonNull(name, "name");
+    }
+  }
+
+  /**
+   * Adds a connector; complete rescheduling.
+   *
+   * @param connector between modules of the program
+   */
+  record AddConnector(Connector connector) implements Adaptation {
+
+    /** Checks for null. */
+    public AddConnector {
+      requireNonNull(connector, "connector");
+    }
+  }
+
+  /**
+   * Removes a connector equal to {@code connector}; complete rescheduling.
+   *
+   * @param connector one of the program's
+   */
+  record RemoveConnector(Connector connector) implements Adaptation {
+
+    /** Checks for null. */
+    public RemoveConnector {
+      requireNonNull(connector, "connector");
+    }
+  }
+}

@@ -1,0 +1,25 @@
+package org.armgals.maam.spi;
+
+/**
+ * Where a leg points inside its cone: {@code elevation} is the angle between the leg and the cone's
+ * axis (0 on the axis), {@code azimuth} the angle around the axis. Radians; a read angle or a
+ * target.
+ *
+ * @param elevation in [0, π)
+ * @param azimuth in [-π, π]
+ */
+public record LegAngles(double elevation, double azimuth) {
+
+  /** The leg on its cone's axis. */
+  public static final LegAngles AXIS = new LegAngles(0, 0);
+
+  /** Checks the ranges. */
+  public LegAngles {
+    if (!(elevation >= 0 && elevation < Math.PI)) {
+      throw new IllegalArgumentException("elevation " + elevation + ": expected in [0, π)");
+    }
+    if (!(azimuth >= -Math.PI && azimuth <= Math.PI)) {
+      throw new IllegalArgumentException("azimuth " + azimuth + ": expected in [-π, π]");
+    }
+  }
+}

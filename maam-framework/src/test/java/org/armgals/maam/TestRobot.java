@@ -1,0 +1,73 @@
+package org.armgals.maam;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import org.armgals.maam.spi.ActuatorKey;
+import org.armgals.maam.spi.FakeBody;
+import org.armgals.maam.spi.SensorKey;
+
+/**
+ * A robot for the tests, on a generic fake body with two integer sensors and one integer actuator,
+ * and a time source the test advances one period per cycle.
+ */
+final class TestRobot extends AbstractRobot {
+
+  static final SensorKey<Integer> WANDER = SensorKey.of("wander", Integer.class);
+  static final SensorKey<Integer> OBSTACLE = SensorKey.of("obstacle", Integer.class);
+  static final ActuatorKey<Integer> MOTOR = ActuatorKey.of("motor", Integer.class);
+  static final ActuatorKey<Integer> OTHER_MOTOR = ActuatorKey.of("other-motor", Integer.class);
+  static final long PERIOD = Duration.ofMillis(10).toNanos();
+
+  final FakeBody fake;
+  final TestTime time;
+  final List<String> errors = new ArrayList<>();
+
+  private TestRobot(FakeBody body, TestTime time) {
+    super("test-robot", body, time);
+    this.fake = body;
+    this.time = time;
+    setErrorHandler((robot, where, error) -> errors.add(where + ": " + error.getMessage()));
+  }
+
+  static TestRobot create() {
+    FakeBody body =
+        FakeBody.builder("test-body")
+            .sensor(WANDER, 0)
+            .sensor(OBSTACLE, 0)
+            .actuator(MOTOR)
+            .actuator(OTHER_MOTOR)
+            .build();
+    return new TestRobot(body, new TestTime());
+  }
+
+  /**
+   * Runs one cycle with the sensors reading {@code wander} and {@code obstacle}; returns the
+   * motor's command.
+   */
+  int step(int wander, int obstacle) {
+    fake.set(WANDER, wander);
+    fake.set(OBSTACLE, obstacle);
+    cycle();
+    time.now += PERIOD;
+    return fake.lastCommand(MOTOR).orElseThrow();
+  }
+
+  void point(AdaptationPoint point) {
+    setAdaptationPoint(point);
+  }
+
+  void bmeta(BMetaRobot bmeta) {
+    setBehavioralMeta(bmeta);
+  }
+
+  /** Time the test moves by hand. */
+  static final class TestTime implements org.armgals.active.TimeSource {
+    long now = 1_000_000_000L;
+
+    @Override
+    public long nanoTime() {
+      return now;
+    }
+  }
+}
