@@ -1,6 +1,7 @@
 package org.armgals.maam.sim;
 
 import java.util.List;
+import org.armgals.maam.spi.Leg;
 
 /**
  * One atom's body as its controller sees it: sensors read at the start of the current control
@@ -24,6 +25,12 @@ public interface AtomBody {
    */
   void setLegTarget(Leg leg, double angle1, double angle2);
 
+  /**
+   * Limits the torque of {@code leg}'s motors to {@code torque} (N·m, >= 0); the atom's {@code
+   * maxTorque} stays the ceiling.
+   */
+  void setTorqueLimit(Leg leg, double torque);
+
   /** Switches {@code leg}'s motors off: it hangs limp until the next target. */
   void relax(Leg leg);
 
@@ -44,6 +51,6 @@ public interface AtomBody {
    */
   boolean send(Leg leg, String payload);
 
-  /** The messages that arrived since the last call, oldest first. */
-  List<NeighbourMessage> receive();
+  /** The messages that arrived at the start of this control cycle, oldest first. */
+  List<ReceivedMessage> receive();
 }

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
+import org.armgals.maam.spi.Leg;
 import org.ode4j.math.DQuaternion;
 import org.ode4j.math.DQuaternionC;
 import org.ode4j.math.DVector3;
@@ -32,7 +33,10 @@ final class AtomModel {
   double energy;
   boolean failed;
   boolean emptyReported;
-  final List<NeighbourMessage> inbox = new ArrayList<>();
+
+  /** The messages that arrived at the start of the current control cycle. */
+  final List<ReceivedMessage> inbox = new ArrayList<>();
+
   double pushX;
   double pushY;
   double pushZ;

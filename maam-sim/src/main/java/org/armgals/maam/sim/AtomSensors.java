@@ -1,6 +1,7 @@
 package org.armgals.maam.sim;
 
 import java.util.List;
+import org.armgals.maam.spi.Leg;
 
 /**
  * What one atom senses, read at the start of a control cycle. A failed atom senses nothing: its

@@ -2,8 +2,9 @@ package org.armgals.maam.sim;
 
 import static java.util.Objects.requireNonNull;
 
-import java.util.ArrayList;
 import java.util.List;
+import org.armgals.maam.spi.Leg;
+import org.jspecify.annotations.Nullable;
 
 /** An atom's {@link AtomBody}: the controller's view of an {@link AtomModel}. */
 final class BodyView implements AtomBody {
@@ -16,6 +17,28 @@ final class BodyView implements AtomBody {
     this.simulation = simulation;
     this.model = model;
     this.sensors = sensors;
+  }
+
+  private @Nullable SimBody spiBody;
+
+  /** This atom as the framework's body SPI sees it (made on first use). */
+  SimBody spiBody() {
+    SimBody b = spiBody;
+    if (b == null) {
+      b = new SimBody(this);
+      spiBody = b;
+    }
+    return b;
+  }
+
+  @Override
+  public void setTorqueLimit(Leg leg, double torque) {
+    requireNonNull(leg, "leg");
+    if (!(torque >= 0) || Double.isInfinite(torque)) {
+      throw new IllegalArgumentException(
+          "torque limit " + torque + " N·m: expected a finite number >= 0");
+    }
+    model.leg(leg).torqueLimit = Math.min(torque, model.params.maxTorque());
   }
 
   @Override
@@ -60,9 +83,7 @@ final class BodyView implements AtomBody {
   }
 
   @Override
-  public List<NeighbourMessage> receive() {
-    List<NeighbourMessage> received = new ArrayList<>(model.inbox);
-    model.inbox.clear();
-    return received;
+  public List<ReceivedMessage> receive() {
+    return List.copyOf(model.inbox);
   }
 }

@@ -1,5 +1,6 @@
 package org.armgals.maam.sim;
 
+import org.armgals.maam.spi.Leg;
 import org.ode4j.math.DQuaternion;
 import org.ode4j.math.DQuaternionC;
 import org.ode4j.math.DVector3;
@@ -51,29 +52,29 @@ final class Frames {
     double h = Math.sqrt(0.5);
     return switch (leg) {
       case PZ -> new DQuaternion(1, 0, 0, 0);
-      case NZ -> new DQuaternion(0, 1, 0, 0);
+      case MZ -> new DQuaternion(0, 1, 0, 0);
       case PX -> new DQuaternion(h, 0, h, 0);
-      case NX -> new DQuaternion(h, 0, -h, 0);
+      case MX -> new DQuaternion(h, 0, -h, 0);
       case PY -> new DQuaternion(h, -h, 0, 0);
-      case NY -> new DQuaternion(h, h, 0, 0);
+      case MY -> new DQuaternion(h, h, 0, 0);
     };
   }
 
   /** The first tilt axis of {@code leg}, in the atom's frame. */
   static double[] axis1(Leg leg) {
     return switch (leg) {
-      case PX, NX -> new double[] {0, 1, 0};
-      case PY, NY -> new double[] {0, 0, 1};
-      case PZ, NZ -> new double[] {1, 0, 0};
+      case PX, MX -> new double[] {0, 1, 0};
+      case PY, MY -> new double[] {0, 0, 1};
+      case PZ, MZ -> new double[] {1, 0, 0};
     };
   }
 
   /** The second tilt axis of {@code leg}, in the atom's frame. */
   static double[] axis2(Leg leg) {
     return switch (leg) {
-      case PX, NX -> new double[] {0, 0, 1};
-      case PY, NY -> new double[] {1, 0, 0};
-      case PZ, NZ -> new double[] {0, 1, 0};
+      case PX, MX -> new double[] {0, 0, 1};
+      case PY, MY -> new double[] {1, 0, 0};
+      case PZ, MZ -> new double[] {0, 1, 0};
     };
   }
 }

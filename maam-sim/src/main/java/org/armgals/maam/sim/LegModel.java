@@ -1,5 +1,6 @@
 package org.armgals.maam.sim;
 
+import org.armgals.maam.spi.Leg;
 import org.jspecify.annotations.Nullable;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
@@ -26,6 +27,7 @@ final class LegModel {
   private double rate2;
   private final double[] target = new double[2];
   boolean powered = true;
+  double torqueLimit;
   boolean failed;
   boolean locked;
   @Nullable Binding binding;
@@ -39,6 +41,7 @@ final class LegModel {
     this.joint = joint;
     this.ray = ray;
     joint.setFeedback(feedback);
+    this.torqueLimit = atom.params.maxTorque();
   }
 
   void setTarget(double a1, double a2) {
@@ -62,7 +65,7 @@ final class LegModel {
     joint.setParam(DJoint.PARAM_N.dParamHiStop2, s2);
     AtomParams p = atom.params;
     boolean on = motorsOn && powered && !failed;
-    double fmax = on ? p.maxTorque() : 0;
+    double fmax = on ? torqueLimit : 0;
     joint.setParam(DJoint.PARAM_N.dParamFMax1, fmax);
     joint.setParam(DJoint.PARAM_N.dParamFMax2, fmax);
     joint.setParam(DJoint.PARAM_N.dParamVel1, on ? speed(target[0] - a1, p) : 0);

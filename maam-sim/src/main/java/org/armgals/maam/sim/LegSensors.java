@@ -1,6 +1,8 @@
 package org.armgals.maam.sim;
 
+import java.util.Optional;
 import java.util.OptionalInt;
+import org.armgals.maam.spi.Leg;
 
 /**
  * What one leg senses, read at the start of a control cycle.
@@ -13,6 +15,7 @@ import java.util.OptionalInt;
  * @param tipContact whether the tip touched anything during the last control period
  * @param locked whether the connector is locked (ready to bind, or bound)
  * @param neighbour the id of the atom bound to this tip, if any
+ * @param neighbourLeg the leg of that atom holding this tip, if any
  * @param proximity distance from the tip to the nearest thing along the leg's axis, or the ray's
  *     range if nothing is nearer (m)
  * @param failed whether the leg has failed (its motors are off; the other values read zero)
@@ -26,6 +29,7 @@ public record LegSensors(
     boolean tipContact,
     boolean locked,
     OptionalInt neighbour,
+    Optional<Leg> neighbourLeg,
     double proximity,
     boolean failed) {
 

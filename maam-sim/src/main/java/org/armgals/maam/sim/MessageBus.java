@@ -2,7 +2,6 @@ package org.armgals.maam.sim;
 
 import java.util.PriorityQueue;
 import java.util.SplittableRandom;
-import java.util.function.Consumer;
 
 /**
  * Neighbour messages in flight: each is delayed by the simulation's message delay and lost with its
@@ -10,7 +9,7 @@ import java.util.function.Consumer;
  */
 final class MessageBus {
 
-  private record InFlight(long dueNanos, long seq, AtomModel to, NeighbourMessage message) {}
+  private record InFlight(long dueNanos, long seq, AtomModel to, ReceivedMessage message) {}
 
   private final PriorityQueue<InFlight> queue =
       new PriorityQueue<>(
@@ -35,7 +34,7 @@ final class MessageBus {
   }
 
   /** Queues a message to {@code to}; returns false if the draw lost it. */
-  boolean send(long nowNanos, AtomModel to, NeighbourMessage message) {
+  boolean send(long nowNanos, AtomModel to, ReceivedMessage message) {
     if (loss > 0 && random.nextDouble() < loss) {
       return false;
     }
@@ -44,12 +43,10 @@ final class MessageBus {
   }
 
   /** Hands every message due by {@code nowNanos} to its atom's inbox; failed atoms drop theirs. */
-  void deliver(long nowNanos, Consumer<AtomModel> onDropped) {
+  void deliver(long nowNanos) {
     while (!queue.isEmpty() && queue.peek().dueNanos <= nowNanos) {
       InFlight m = queue.poll();
-      if (m.to.failed) {
-        onDropped.accept(m.to);
-      } else {
+      if (!m.to.failed) {
         m.to.inbox.add(m.message);
       }
     }

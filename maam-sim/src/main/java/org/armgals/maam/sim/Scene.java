@@ -5,6 +5,7 @@ import static java.util.Objects.requireNonNull;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import org.armgals.maam.spi.Leg;
 
 /**
  * A world and the molecules in it: what a simulation starts from. Scenes are data: {@link Scenes}
@@ -47,7 +48,8 @@ public record Scene(
               "scene '" + name + "': bond " + b + " names atom " + id + ", which is not placed");
         }
       }
-      if (!legs.add(b.atomA() + b.legA().label()) || !legs.add(b.atomB() + b.legB().label())) {
+      if (!legs.add(b.atomA() + Legs.label(b.legA()))
+          || !legs.add(b.atomB() + Legs.label(b.legB()))) {
         throw new IllegalArgumentException(
             "scene '" + name + "': bond " + b + " uses a leg that is already bonded");
       }
@@ -92,7 +94,7 @@ public record Scene(
 
     @Override
     public String toString() {
-      return atomA + ":" + legA.label() + " " + atomB + ":" + legB.label();
+      return atomA + ":" + Legs.label(legA) + " " + atomB + ":" + Legs.label(legB);
     }
   }
 }

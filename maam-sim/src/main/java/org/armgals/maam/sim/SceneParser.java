@@ -71,7 +71,7 @@ final class SceneParser {
         String[] a = end(w[1]);
         String[] b = end(w[2]);
         bonds.add(
-            new Scene.Bond(integer(a[0]), Leg.ofLabel(a[1]), integer(b[0]), Leg.ofLabel(b[1])));
+            new Scene.Bond(integer(a[0]), Legs.ofLabel(a[1]), integer(b[0]), Legs.ofLabel(b[1])));
       }
       default ->
           throw new IllegalArgumentException(

@@ -1,5 +1,7 @@
 package org.armgals.maam.sim;
 
+import org.armgals.maam.spi.Leg;
+
 /**
  * Something that happened in a simulation, recorded in the trace of the control cycle it happened
  * in. Physical events come from the simulator; {@link Note}s come from the meta level.

@@ -2,6 +2,9 @@ package org.armgals.maam.sim;
 
 import java.time.Duration;
 import java.util.List;
+import org.armgals.maam.sim.spi.Controller;
+import org.armgals.maam.spi.Body;
+import org.armgals.maam.spi.Leg;
 
 /**
  * A running scene: atoms, their controllers and the world, stepped in virtual time. One control
@@ -29,6 +32,17 @@ public interface Simulation extends AutoCloseable {
 
   /** The body of atom {@code id}. */
   AtomBody atom(int id);
+
+  /**
+   * Atom {@code id} as the MAAM framework's body SPI sees it, for a robot: its body id is {@code
+   * "a" + id}; its sensors read the values of the current cycle (see docs/simulator.md for the
+   * mapping). Drive the robot from the atom's controller ({@link #setController}), e.g. {@code
+   * (body, cycle) -> robot.cycle()}.
+   */
+  Body body(int id);
+
+  /** Replaces the controller of atom {@code id} from the next control cycle on. */
+  void setController(int id, Controller controller);
 
   /** Runs one control cycle and the physics of one control period. */
   void runCycle();

@@ -5,10 +5,13 @@ import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.OptionalInt;
 import java.util.TreeMap;
 import org.armgals.maam.sim.spi.Controller;
 import org.armgals.maam.sim.spi.Pacer;
+import org.armgals.maam.spi.Body;
+import org.armgals.maam.spi.Leg;
 import org.jspecify.annotations.Nullable;
 import org.ode4j.math.DVector3;
 
@@ -102,6 +105,17 @@ final class SimulationImpl implements Simulation {
   }
 
   @Override
+  public Body body(int id) {
+    return view(id).spiBody();
+  }
+
+  @Override
+  public void setController(int id, Controller controller) {
+    view(id);
+    controllers.put(id, java.util.Objects.requireNonNull(controller, "controller"));
+  }
+
+  @Override
   public long cycle() {
     return cycle;
   }
@@ -123,7 +137,10 @@ final class SimulationImpl implements Simulation {
     }
     long start = timeNanos;
     senseAll();
-    messages.deliver(start, to -> {});
+    for (AtomModel atom : atoms) {
+      atom.inbox.clear();
+    }
+    messages.deliver(start);
     bindLockedTips();
     for (AtomModel atom : atoms) {
       if (!atom.failed) {
@@ -219,7 +236,9 @@ final class SimulationImpl implements Simulation {
     for (Leg l : Leg.values()) {
       LegModel leg = atom.leg(l);
       if (atom.failed || leg.failed) {
-        legs.add(new LegSensors(l, 0, 0, 0, 0, false, false, OptionalInt.empty(), 0, true));
+        legs.add(
+            new LegSensors(
+                l, 0, 0, 0, 0, false, false, OptionalInt.empty(), Optional.empty(), 0, true));
       } else {
         Binding b = leg.binding;
         legs.add(
@@ -232,6 +251,7 @@ final class SimulationImpl implements Simulation {
                 leg.contact,
                 leg.locked,
                 b == null ? OptionalInt.empty() : OptionalInt.of(b.other(leg).atom.id),
+                b == null ? Optional.empty() : Optional.of(b.other(leg).leg),
                 leg.proximity,
                 false));
       }
@@ -336,7 +356,7 @@ final class SimulationImpl implements Simulation {
       return false;
     }
     LegModel to = b.other(leg);
-    NeighbourMessage m = new NeighbourMessage(leg.atom.id, leg.leg, to.leg, timeNanos, payload);
+    ReceivedMessage m = new ReceivedMessage(leg.atom.id, leg.leg, to.leg, timeNanos, payload);
     if (!messages.send(timeNanos, to.atom, m)) {
       events.add(new SimEvent.MessageLost(timeNanos, leg.atom.id, leg.leg));
     }

@@ -5,6 +5,7 @@ import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.lang.reflect.RecordComponent;
 import java.util.List;
+import org.armgals.maam.spi.Leg;
 
 /** Writes the trace: a header line, then one JSON line per control cycle (docs/simulator.md). */
 final class TraceWriter {
@@ -123,14 +124,14 @@ final class TraceWriter {
           b.append("\"legFailed\",\"atom\":")
               .append(x.atom())
               .append(",\"leg\":\"")
-              .append(x.leg().label())
+              .append(Legs.label(x.leg()))
               .append('"');
       case SimEvent.BatteryEmpty x -> b.append("\"batteryEmpty\",\"atom\":").append(x.atom());
       case SimEvent.MessageLost x ->
           b.append("\"messageLost\",\"atom\":")
               .append(x.from())
               .append(",\"leg\":\"")
-              .append(x.fromLeg().label())
+              .append(Legs.label(x.fromLeg()))
               .append('"');
       case SimEvent.Note x -> {
         b.append("\"note\",\"atom\":").append(x.atom()).append(",\"text\":");
@@ -142,8 +143,8 @@ final class TraceWriter {
 
   private static void pair(StringBuilder b, String type, int a, Leg la, int c, Leg lc) {
     b.append('"').append(type).append("\",\"a\":").append(a).append(",\"legA\":\"");
-    b.append(la.label()).append("\",\"b\":").append(c).append(",\"legB\":\"");
-    b.append(lc.label()).append('"');
+    b.append(Legs.label(la)).append("\",\"b\":").append(c).append(",\"legB\":\"");
+    b.append(Legs.label(lc)).append('"');
   }
 
   private void write() {

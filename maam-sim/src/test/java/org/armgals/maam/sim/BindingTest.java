@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.armgals.maam.spi.Leg;
 import org.junit.jupiter.api.Test;
 
 class BindingTest {
@@ -12,7 +13,7 @@ class BindingTest {
     List<SimEvent> events = new ArrayList<>();
     try (Simulation s = Simulation.builder(scene).build()) {
       s.atom(1).bind(Leg.PX);
-      s.atom(2).bind(Leg.NX);
+      s.atom(2).bind(Leg.MX);
       for (int i = 0; i < cycles; i++) {
         s.runCycle();
         events.addAll(s.lastEvents());
@@ -24,7 +25,7 @@ class BindingTest {
   @Test
   void tipsWithinDistanceAndAlignmentBind() {
     assertThat(runLocked(TestScenes.facing(0.003, 0, ""), 3))
-        .containsExactly(new SimEvent.Bound(0, 1, Leg.PX, 2, Leg.NX));
+        .containsExactly(new SimEvent.Bound(0, 1, Leg.PX, 2, Leg.MX));
   }
 
   @Test
@@ -73,7 +74,7 @@ class BindingTest {
               broke -> {
                 assertThat(broke.force()).isGreaterThan(strength);
                 assertThat(broke.atomA()).isEqualTo(1);
-                assertThat(broke.legB()).isEqualTo(Leg.NX);
+                assertThat(broke.legB()).isEqualTo(Leg.MX);
               });
       s.runCycle();
       assertThat(s.atom(1).sensors().leg(Leg.PX).neighbour()).isEmpty();
@@ -85,10 +86,10 @@ class BindingTest {
   void unbindReleasesTheBindingOnCommand() {
     try (Simulation s = Simulation.builder(TestScenes.boundPair("")).build()) {
       s.runCycle();
-      s.atom(2).unbind(Leg.NX);
+      s.atom(2).unbind(Leg.MX);
       s.runCycle();
       assertThat(s.lastEvents())
-          .containsExactly(new SimEvent.Unbound(10_000_000, 2, Leg.NX, 1, Leg.PX));
+          .containsExactly(new SimEvent.Unbound(10_000_000, 2, Leg.MX, 1, Leg.PX));
       s.runCycle();
       assertThat(s.atom(1).sensors().leg(Leg.PX).neighbour()).isEmpty();
     }

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.time.Duration;
 import java.util.SplittableRandom;
+import org.armgals.maam.spi.Leg;
 import org.junit.jupiter.api.Test;
 
 class PhysicsSanityTest {
@@ -18,7 +19,7 @@ class PhysicsSanityTest {
       assertThat(TestScenes.distance(settled.position(), later.position())).isLessThan(0.002);
       assertThat(Math.abs(later.tilt() - settled.tilt())).isLessThan(0.01);
       assertThat(later.position().z()).isBetween(0.05, 0.08);
-      for (Leg leg : new Leg[] {Leg.NX, Leg.NY, Leg.NZ}) {
+      for (Leg leg : new Leg[] {Leg.MX, Leg.MY, Leg.MZ}) {
         assertThat(later.leg(leg).tipContact()).as("tip %s on the ground", leg).isTrue();
       }
       assertThat(later.leg(Leg.PZ).tipContact()).isFalse();
@@ -75,7 +76,7 @@ class PhysicsSanityTest {
       }
       assertThat(TestScenes.distance(s.atom(2).sensors().position(), start2)).isGreaterThan(0.05);
       assertThat(s.atom(1).sensors().leg(Leg.PX).neighbour()).hasValue(2);
-      assertThat(s.atom(2).sensors().leg(Leg.NX).neighbour()).hasValue(1);
+      assertThat(s.atom(2).sensors().leg(Leg.MX).neighbour()).hasValue(1);
     }
   }
 

@@ -3,6 +3,7 @@ package org.armgals.maam.sim;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import org.armgals.maam.spi.Leg;
 import org.junit.jupiter.api.Test;
 
 class ScenesTest {
@@ -49,7 +50,7 @@ class ScenesTest {
             new Obstacle.Pipe(new Vec3(0, 0, 0.2), 'x', 0.15, 0.01, 2));
     assertThat(scene.atoms()).hasSize(3);
     assertThat(scene.atoms().get(1).orientation()).isEqualTo(Quat.tripod());
-    assertThat(scene.bonds()).containsExactly(new Scene.Bond(1, Leg.PX, 2, Leg.NX));
+    assertThat(scene.bonds()).containsExactly(new Scene.Bond(1, Leg.PX, 2, Leg.MX));
   }
 
   @Test

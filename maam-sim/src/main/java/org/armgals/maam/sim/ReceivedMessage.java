@@ -2,6 +2,8 @@ package org.armgals.maam.sim;
 
 import static java.util.Objects.requireNonNull;
 
+import org.armgals.maam.spi.Leg;
+
 /**
  * A message from a bound neighbour, received through the binding of two legs.
  *
@@ -11,9 +13,9 @@ import static java.util.Objects.requireNonNull;
  * @param sentNanos the virtual time it was sent (ns)
  * @param payload what was sent
  */
-public record NeighbourMessage(int from, Leg fromLeg, Leg toLeg, long sentNanos, String payload) {
+public record ReceivedMessage(int from, Leg fromLeg, Leg toLeg, long sentNanos, String payload) {
   /** Checks for nulls. */
-  public NeighbourMessage {
+  public ReceivedMessage {
     requireNonNull(fromLeg, "fromLeg");
     requireNonNull(toLeg, "toLeg");
     requireNonNull(payload, "payload");
