@@ -12,7 +12,7 @@
 # its own on a JDK >= 21 (JAVA_HOME if it is one, else the newest under /usr/lib/jvm) with
 # SIM_JAVA_OPTS (default "-Xms1g -Xmx1g"). Prints one line per size:
 #   sim name=rtf atoms=<n> step_ms=<s> rtf=<x>
-# rtf is virtual seconds simulated per real second (see docs/benchmarks-sim.md).
+# rtf is virtual seconds simulated per real second (see docs/simulator.md, "Speed").
 set -euo pipefail
 
 here="$(cd "$(dirname "$0")" && pwd)"
