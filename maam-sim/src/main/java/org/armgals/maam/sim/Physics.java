@@ -122,11 +122,13 @@ final class Physics {
    * the start of a control cycle.
    */
   void castRays() {
+    ENGINE.lock();
     raysOnly = true;
     try {
       space.collide(null, this::near);
     } finally {
       raysOnly = false;
+      ENGINE.unlock();
     }
   }
 

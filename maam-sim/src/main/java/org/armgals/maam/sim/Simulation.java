@@ -83,7 +83,10 @@ public interface Simulation extends AutoCloseable {
   /** Fails atom {@code id}: its motors stop, it senses nothing and sends nothing. */
   void failAtom(int id);
 
-  /** Fails {@code leg} of atom {@code id}: its motors stop and it senses nothing. */
+  /**
+   * Fails {@code leg} of atom {@code id}: its motors stop, it senses nothing and sends nothing; its
+   * binding, a mechanical latch, holds.
+   */
   void failLeg(int id, Leg leg);
 
   /** Sets the probability, in [0, 1], that a neighbour message is lost. */

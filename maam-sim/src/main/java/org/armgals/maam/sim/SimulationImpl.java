@@ -352,7 +352,7 @@ final class SimulationImpl implements Simulation {
 
   boolean send(LegModel leg, String payload) {
     Binding b = leg.binding;
-    if (leg.atom.failed || b == null) {
+    if (leg.atom.failed || leg.failed || b == null) {
       return false;
     }
     LegModel to = b.other(leg);
