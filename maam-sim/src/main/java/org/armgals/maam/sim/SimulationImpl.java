@@ -13,7 +13,6 @@ import org.armgals.maam.sim.spi.Pacer;
 import org.armgals.maam.spi.Body;
 import org.armgals.maam.spi.Leg;
 import org.jspecify.annotations.Nullable;
-import org.ode4j.math.DVector3;
 
 /** The simulation: see {@link Simulation} for the order of a control cycle. */
 final class SimulationImpl implements Simulation {
@@ -25,6 +24,7 @@ final class SimulationImpl implements Simulation {
   private final Map<Integer, Controller> controllers = new HashMap<>();
   private final List<Binding> bindings = new ArrayList<>();
   private final MessageBus messages;
+  private final TipMatcher tips;
   private final Pacer pacer;
   private final @Nullable TraceWriter trace;
   private final long stepNanos;
@@ -44,6 +44,7 @@ final class SimulationImpl implements Simulation {
     this.pacer = b.pacer;
     this.messages = new MessageBus(b.seed, b.messageDelayNanos, b.packetLoss);
     this.physics = new Physics(scene, b.seed);
+    this.tips = new TipMatcher(scene.params());
     List<Scene.Placement> placements = new ArrayList<>(scene.atoms());
     placements.sort(Comparator.comparingInt(Scene.Placement::id));
     for (Scene.Placement p : placements) {
@@ -56,7 +57,7 @@ final class SimulationImpl implements Simulation {
     for (Scene.Bond bond : scene.bonds()) {
       LegModel a = bodies.get(bond.atomA()).model.leg(bond.legA());
       LegModel c = bodies.get(bond.atomB()).model.leg(bond.legB());
-      if (!inTolerance(a, c)) {
+      if (!tips.inTolerance(a, c)) {
         throw new IllegalArgumentException(
             "scene '"
                 + scene.name()
@@ -271,72 +272,13 @@ final class SimulationImpl implements Simulation {
         legs);
   }
 
-  /**
-   * Binds every locked, free tip to the nearest locked, free tip of another atom within tolerance;
-   * tips are visited in the order of atom ids and legs, so the result is deterministic.
-   */
   private void bindLockedTips() {
-    double cell = scene.params().bindDistance();
-    Map<Long, List<LegModel>> grid = new HashMap<>();
-    List<LegModel> candidates = new ArrayList<>();
-    for (AtomModel atom : atoms) {
-      if (atom.failed) {
-        continue;
-      }
-      for (LegModel leg : atom.legs.values()) {
-        if (leg.locked && leg.binding == null && !leg.failed) {
-          candidates.add(leg);
-          DVector3 t = leg.tip();
-          grid.computeIfAbsent(key(t, cell, 0, 0, 0), k -> new ArrayList<>()).add(leg);
-        }
-      }
+    for (LegModel[] pair : tips.pairs(atoms)) {
+      bindings.add(new Binding(physics, pair[0], pair[1]));
+      events.add(
+          new SimEvent.Bound(
+              timeNanos, pair[0].atom.id, pair[0].leg, pair[1].atom.id, pair[1].leg));
     }
-    for (LegModel leg : candidates) {
-      if (leg.binding != null) {
-        continue;
-      }
-      DVector3 t = leg.tip();
-      LegModel best = null;
-      double bestDistance = Double.MAX_VALUE;
-      for (int dx = -1; dx <= 1; dx++) {
-        for (int dy = -1; dy <= 1; dy++) {
-          for (int dz = -1; dz <= 1; dz++) {
-            for (LegModel other : grid.getOrDefault(key(t, cell, dx, dy, dz), List.of())) {
-              if (other.atom == leg.atom || other.binding != null || !inTolerance(leg, other)) {
-                continue;
-              }
-              double d = t.distance(other.tip());
-              if (d < bestDistance) {
-                best = other;
-                bestDistance = d;
-              }
-            }
-          }
-        }
-      }
-      if (best != null) {
-        bindings.add(new Binding(physics, leg, best));
-        events.add(new SimEvent.Bound(timeNanos, leg.atom.id, leg.leg, best.atom.id, best.leg));
-      }
-    }
-  }
-
-  private static long key(DVector3 p, double cell, int dx, int dy, int dz) {
-    long x = (long) Math.floor(p.get0() / cell) + dx;
-    long y = (long) Math.floor(p.get1() / cell) + dy;
-    long z = (long) Math.floor(p.get2() / cell) + dz;
-    return (x * 73856093L) ^ (y * 19349663L) ^ (z * 83492791L);
-  }
-
-  private boolean inTolerance(LegModel a, LegModel b) {
-    AtomParams p = scene.params();
-    if (a.tip().distance(b.tip()) > p.bindDistance()) {
-      return false;
-    }
-    DVector3 da = a.direction();
-    DVector3 db = b.direction();
-    double cos = -(da.get0() * db.get0() + da.get1() * db.get1() + da.get2() * db.get2());
-    return Math.acos(Math.max(-1, Math.min(1, cos))) <= p.bindAlignment();
   }
 
   void unbind(LegModel leg) {
