@@ -9,9 +9,10 @@ import org.armgals.maam.spi.Leg;
 /**
  * A running scene: atoms, their controllers and the world, stepped in virtual time. One control
  * cycle ({@link #runCycle()}) reads every atom's sensors, delivers the neighbour messages that are
- * due, runs every controller in the order of atom ids, records the cycle in the trace, then runs
- * the physics for one control period in fixed steps. Same scene, seed, controllers and fault calls
- * give the same trace, bit for bit.
+ * due, binds the locked tips that are within tolerance, runs every controller in the order of atom
+ * ids, runs the physics for one control period in fixed steps, then records the cycle (its sensor
+ * readings and its events) in the trace. Same scene, seed, controllers and fault calls give the
+ * same trace, bit for bit.
  *
  * <p>Concurrency: a simulation is confined to the thread that calls it; it is not thread-safe.
  * Simulations on different threads may run at once (the engine's one global, its random seed, is
