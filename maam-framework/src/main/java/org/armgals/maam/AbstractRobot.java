@@ -255,7 +255,7 @@ public abstract class AbstractRobot {
   private Plan plan() {
     Plan current = plan;
     if (current == null || planVersion != meta.version()) {
-      connectorStates.keySet().retainAll(meta.connectors());
+      connectorStates.keySet().retainAll(new java.util.HashSet<>(meta.connectors()));
       current =
           new Plan(
               meta.schedule(),

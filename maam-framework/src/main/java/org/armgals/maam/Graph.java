@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
+import java.util.function.IntFunction;
 
 /**
  * A directed graph over nodes {@code 0..n-1}, sorted topologically with ties broken by the smallest
@@ -36,7 +37,7 @@ final class Graph {
    *
    * @throws CycleException naming the nodes of one cycle with {@code names}
    */
-  int[] order(String where, List<String> names) {
+  int[] order(String where, IntFunction<String> names) {
     int[] offsets = new int[nodes + 1];
     int[] indegree = new int[nodes];
     for (int e = 0; e < edges; e++) {
@@ -82,7 +83,7 @@ final class Graph {
    * One cycle among the nodes left with incoming edges: each has a predecessor also left, so
    * walking predecessors from the smallest one must come back to a node already seen.
    */
-  private List<String> cycle(int[] indegree, List<String> names) {
+  private List<String> cycle(int[] indegree, IntFunction<String> names) {
     int start = 0;
     while (indegree[start] == 0) {
       start++;
@@ -116,7 +117,7 @@ final class Graph {
     Collections.rotate(loop, -smallest);
     List<String> cycle = new ArrayList<>(loop.size());
     for (int node : loop) {
-      cycle.add(names.get(node));
+      cycle.add(names.apply(node));
     }
     return cycle;
   }

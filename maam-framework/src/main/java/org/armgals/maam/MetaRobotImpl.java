@@ -3,9 +3,7 @@ package org.armgals.maam;
 import static java.util.Objects.requireNonNull;
 
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 
 /** {@link MetaRobot}: computes the new program and its schedule before replacing the old one. */
@@ -84,7 +82,6 @@ final class MetaRobotImpl implements MetaRobot {
       }
     }
     Schedule newSchedule = scheduler.schedule(newSchemas, newConnectors);
-    checkInputsFedOnce(newSchemas, newConnectors);
     schemas = List.copyOf(newSchemas);
     connectors = List.copyOf(newConnectors);
     schedule = newSchedule;
@@ -146,29 +143,6 @@ final class MetaRobotImpl implements MetaRobot {
     for (Schema schema : schemas) {
       if (!names.add(schema.name())) {
         throw new IllegalArgumentException("schema name '" + schema.name() + "': used twice");
-      }
-    }
-  }
-
-  private static void checkInputsFedOnce(List<Schema> schemas, List<Connector> connectors) {
-    Map<PortRef, Object> fed = new HashMap<>();
-    for (Schema schema : schemas) {
-      for (Wire wire : schema.wires()) {
-        fed.put(wire.to(), wire);
-      }
-    }
-    for (Connector connector : connectors) {
-      if (connector instanceof Derivator derivator) {
-        Object other = fed.putIfAbsent(derivator.target(), derivator);
-        if (other != null) {
-          throw new IllegalArgumentException(
-              derivator
-                  + ": "
-                  + derivator.target()
-                  + " is already fed by "
-                  + other
-                  + ": expected at most one producer per input");
-        }
       }
     }
   }

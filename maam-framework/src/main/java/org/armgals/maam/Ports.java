@@ -60,7 +60,11 @@ final class Ports {
     BehaviorModule module = modules.get(ref.module());
     if (module == null) {
       throw new IllegalArgumentException(
-          what + ": no module named '" + ref.module() + "': expected one of " + modules.keySet());
+          what
+              + ": no module named '"
+              + ref.module()
+              + "': expected one of "
+              + (modules.size() <= 20 ? modules.keySet() : "its " + modules.size() + " modules"));
     }
     return module;
   }

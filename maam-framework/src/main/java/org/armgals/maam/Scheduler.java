@@ -25,7 +25,8 @@ public interface Scheduler {
    * The schedule of {@code schemas}, in the order given, joined by {@code connectors}.
    *
    * @throws IllegalArgumentException two modules of one name, or a connector naming a module or a
-   *     port that is not there or joining incompatible types
+   *     port that is not there or joining incompatible types, or a derivator into an input already
+   *     fed by a wire or another derivator
    * @throws CycleException the program's graph has a cycle
    */
   Schedule schedule(List<Schema> schemas, List<Connector> connectors);

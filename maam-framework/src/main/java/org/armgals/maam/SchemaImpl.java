@@ -7,6 +7,7 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.jspecify.annotations.Nullable;
 
 /** {@link Schema}: checked and partially scheduled by its builder. */
 final class SchemaImpl implements Schema {
@@ -16,6 +17,8 @@ final class SchemaImpl implements Schema {
   private final List<BehaviorModule> modules;
   private final List<Wire> wires;
   private final List<BehaviorModule> partialSchedule;
+  private final int[] edges;
+  private final Map<PortRef, Wire> fed;
 
   private SchemaImpl(String name, List<ReactiveModule> reactiveModules, List<Wire> wires) {
     this.name = name;
@@ -40,7 +43,7 @@ final class SchemaImpl implements Schema {
     }
     this.modules = List.copyOf(byName.values());
     Graph graph = new Graph(modules.size());
-    Map<PortRef, Wire> fed = new HashMap<>();
+    this.fed = new HashMap<>();
     String what = "schema '" + name + "'";
     for (Wire wire : wires) {
       Ports.output(what + ", wire " + wire, wire.from(), byName);
@@ -60,11 +63,32 @@ final class SchemaImpl implements Schema {
       }
       graph.edge(index.get(wire.from().module()), index.get(wire.to().module()));
     }
+    int[] sorted = graph.order(what, names::get);
+    int[] position = new int[sorted.length];
     List<BehaviorModule> order = new ArrayList<>(modules.size());
-    for (int i : graph.order(what, names)) {
-      order.add(modules.get(i));
+    for (int p = 0; p < sorted.length; p++) {
+      order.add(modules.get(sorted[p]));
+      position[sorted[p]] = p;
     }
     this.partialSchedule = List.copyOf(order);
+    this.edges = new int[2 * wires.size()];
+    for (int w = 0; w < wires.size(); w++) {
+      edges[2 * w] = position[index.get(wires.get(w).from().module())];
+      edges[2 * w + 1] = position[index.get(wires.get(w).to().module())];
+    }
+  }
+
+  /** The wire into input {@code input}, if one of this schema's wires feeds it. */
+  @Nullable Wire wireInto(PortRef input) {
+    return fed.get(input);
+  }
+
+  /**
+   * The wires as pairs of positions in the partial schedule, {@code [from0, to0, from1, to1, ...]}:
+   * the scheduler merges schemas without looking names up.
+   */
+  int[] edges() {
+    return edges;
   }
 
   /** This schema with {@code replacement} instead of the module of the same name. */

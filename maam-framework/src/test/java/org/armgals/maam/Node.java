@@ -5,7 +5,7 @@ import java.util.List;
 
 /**
  * A reactor for the tests: emits on {@link #OUT} the sum of its inputs plus its bias, or nothing
- * when no input has a signal and it has inputs; logs its runs into a shared trace.
+ * when its bias is 0, it has inputs and none has a signal; logs its runs into a shared trace.
  */
 final class Node implements Reactor {
 
@@ -51,7 +51,7 @@ final class Node implements Reactor {
   public void react(Inputs in, Outputs out) {
     trace.add(name);
     int sum = bias;
-    boolean any = inputs.isEmpty();
+    boolean any = inputs.isEmpty() || bias != 0;
     for (Port<?> port : inputs) {
       Num value = in.get((Port<Num>) port);
       if (value != null) {

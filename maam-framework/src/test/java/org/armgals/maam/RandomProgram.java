@@ -35,7 +35,7 @@ final class RandomProgram {
       List<Node> nodes = new ArrayList<>();
       int size = 1 + random.nextInt(maxModulesPerSchema);
       for (int m = 0; m < size; m++) {
-        Node node = new Node("s" + s + "m" + m, FREE_INPUTS + 1, 0, trace);
+        Node node = new Node("s" + s + "m" + m, FREE_INPUTS + 1, 1 + m % 3, trace);
         nodes.add(node);
         all.add(node);
         modules.put(node.name(), node);

@@ -7,7 +7,8 @@ import java.util.Optional;
  * The body test double: tests set what its sensors read and look at the commands its actuators
  * received. Every method is synchronized on the body, so a test thread and a robot's thread may
  * share one; the robot still sees one value per sensor and cycle only if the test sets sensors
- * between cycles.
+ * between cycles. It keeps every command it receives until {@link #clearCommands}: a body for
+ * tests, not for long runs.
  */
 public sealed interface FakeBody extends Body permits FakeBodyImpl {
 
