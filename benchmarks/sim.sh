@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# Measures the simulator's real-time factor: benchmarks/sim.sh [--step-ms s] [n...]
+#
+#   n          numbers of atoms (default: 1 10 100 1000), each a grid of free atoms in tripod pose
+#              whose controllers read their sensors and swing their upper legs every 10 ms cycle
+#   --step-ms  the physics step in milliseconds (default 1)
+#   --warmup-seconds w, --seconds m   warm up w seconds of real time (default 2), then measure
+#              for m seconds of real time (default 3; at least one control cycle)
+#   --no-build use benchmarks/target/benchmarks.jar as it is
+#
+# Builds benchmarks/target/benchmarks.jar with the Maven wrapper, then runs each size in a JVM of
+# its own on a JDK >= 21 (JAVA_HOME if it is one, else the newest under /usr/lib/jvm) with
+# SIM_JAVA_OPTS (default "-Xms1g -Xmx1g"). Prints one line per size:
+#   sim name=rtf atoms=<n> step_ms=<s> rtf=<x>
+# rtf is virtual seconds simulated per real second (see docs/simulator.md, "Speed").
+set -euo pipefail
+
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(dirname "$here")"
+jar="$here/target/benchmarks.jar"
+
+sizes=()
+args=()
+build=1
+while (($#)); do
+  case "$1" in
+    --step-ms) args+=(--step-ms "${2:?--step-ms needs a number}"); shift 2 ;;
+    --warmup-seconds) args+=(--warmup-seconds "${2:?--warmup-seconds needs a number}"); shift 2 ;;
+    --seconds) args+=(--seconds "${2:?--seconds needs a number}"); shift 2 ;;
+    --no-build) build=0; shift ;;
+    -h | --help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "sim.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
+    *) sizes+=("$1"); shift ;;
+  esac
+done
+if ((${#sizes[@]} == 0)); then
+  sizes=(1 10 100 1000)
+fi
+
+# The major version of the JDK at $1, or nothing if it is not a JDK.
+jdk_major() {
+  local home="$1" version=""
+  [[ -x "$home/bin/java" ]] || return 0
+  if [[ -f "$home/release" ]]; then
+    version="$(sed -n 's/^JAVA_VERSION="\(.*\)"/\1/p' "$home/release")"
+  fi
+  if [[ -z "$version" ]]; then
+    version="$("$home/bin/java" -XshowSettings:properties -version 2>&1 |
+      sed -n 's/^ *java\.specification\.version = //p')"
+  fi
+  version="${version#1.}"
+  echo "${version%%[.+-]*}"
+}
+
+find_java() {
+  local best="" best_major=0 home major
+  if [[ -n "${JAVA_HOME:-}" ]]; then
+    major="$(jdk_major "$JAVA_HOME")"
+    if [[ -n "$major" ]] && ((major >= 21)); then
+      echo "$JAVA_HOME/bin/java"
+      return
+    fi
+  fi
+  for home in /usr/lib/jvm/*/; do
+    home="${home%/}"
+    [[ -L "$home" ]] && continue
+    major="$(jdk_major "$home")"
+    if [[ -n "$major" ]] && ((major > best_major)); then
+      best="$home"
+      best_major="$major"
+    fi
+  done
+  if ((best_major < 21)); then
+    echo "sim.sh: no JDK >= 21 (JAVA_HOME=${JAVA_HOME:-unset}, nothing newer under /usr/lib/jvm)" >&2
+    exit 1
+  fi
+  echo "$best/bin/java"
+}
+
+java="$(find_java)"
+if ((build)); then
+  (cd "$root" && ./mvnw -B -q -pl benchmarks -am package -DskipTests) >&2
+fi
+[[ -f "$jar" ]] || { echo "sim.sh: $jar is missing; run without --no-build" >&2; exit 1; }
+
+read -r -a opts <<<"${SIM_JAVA_OPTS:--Xms1g -Xmx1g}"
+echo "# $("$java" -version 2>&1 | head -1); options: ${opts[*]}; $(nproc) cores" >&2
+for n in "${sizes[@]}"; do
+  "$java" "${opts[@]}" -cp "$jar" org.armgals.bench.sim.SimRtf "${args[@]}" "$n"
+done

@@ -1,0 +1,88 @@
+package org.armgals.bench.sim;
+
+import java.io.PrintStream;
+import java.time.Duration;
+import org.armgals.active.TimeSource;
+import org.armgals.maam.sim.AtomBody;
+import org.armgals.maam.sim.Scenes;
+import org.armgals.maam.sim.Simulation;
+import org.armgals.maam.sim.spi.Controller;
+import org.armgals.maam.spi.Leg;
+
+/**
+ * Measures the real-time factor of maam-sim: {@code n} atoms in tripod pose on a grid, each run by
+ * a simple controller that reads its sensors and swings its three upper legs, at a fixed physics
+ * step and a 10 ms control period. Prints {@code sim name=rtf atoms=<n> step_ms=<s> rtf=<x>}.
+ *
+ * <p>Usage: {@code SimRtf [--step-ms s] [--warmup-seconds w] [--seconds m] n...}
+ */
+public final class SimRtf {
+
+  private final TimeSource time;
+  private final PrintStream out;
+
+  SimRtf(TimeSource time, PrintStream out) {
+    this.time = time;
+    this.out = out;
+  }
+
+  /** The command line: see the class comment. */
+  public static void main(String[] args) {
+    double stepMs = 1;
+    double warmup = 2;
+    double seconds = 3;
+    java.util.List<Integer> sizes = new java.util.ArrayList<>();
+    for (int i = 0; i < args.length; i++) {
+      switch (args[i]) {
+        case "--step-ms" -> stepMs = Double.parseDouble(args[++i]);
+        case "--warmup-seconds" -> warmup = Double.parseDouble(args[++i]);
+        case "--seconds" -> seconds = Double.parseDouble(args[++i]);
+        default -> sizes.add(Integer.parseInt(args[i]));
+      }
+    }
+    if (sizes.isEmpty()) {
+      sizes = java.util.List.of(1, 10, 100, 1000);
+    }
+    SimRtf bench = new SimRtf(TimeSource.system(), System.out);
+    for (int n : sizes) {
+      bench.run(n, stepMs, warmup, seconds);
+    }
+  }
+
+  void run(int atoms, double stepMs, double warmupSeconds, double seconds) {
+    Duration step = Duration.ofNanos(Math.round(stepMs * 1e6));
+    Duration period = step.multipliedBy(Math.max(1, Math.round(10 / stepMs)));
+    try (Simulation sim =
+        Simulation.builder(Scenes.grid(atoms, 0.4))
+            .physicsStep(step)
+            .controlPeriod(period)
+            .controllers(SimRtf::swing)
+            .build()) {
+      runFor(sim, warmupSeconds);
+      long virtualStart = sim.timeNanos();
+      long realStart = time.nanoTime();
+      runFor(sim, seconds);
+      double rtf = (sim.timeNanos() - virtualStart) / (double) (time.nanoTime() - realStart);
+      out.printf("sim name=rtf atoms=%d step_ms=%s rtf=%.3f%n", atoms, stepMs, rtf);
+    }
+  }
+
+  /** Runs control cycles until {@code seconds} of real time have passed (at least one cycle). */
+  private void runFor(Simulation sim, double seconds) {
+    long end = time.nanoTime() + (long) (seconds * 1e9);
+    do {
+      sim.runCycle();
+    } while (time.nanoTime() < end);
+  }
+
+  /** Reads the body's sensors and swings the three upper legs of the tripod. */
+  private static Controller swing(int id) {
+    return (AtomBody body, long cycle) -> {
+      double energy = body.sensors().energy();
+      double a = energy > 0 ? 0.4 * Math.sin(cycle * 0.05 + id) : 0;
+      body.setLegTarget(Leg.PX, a, 0);
+      body.setLegTarget(Leg.PY, 0, a);
+      body.setLegTarget(Leg.PZ, a, -a);
+    };
+  }
+}

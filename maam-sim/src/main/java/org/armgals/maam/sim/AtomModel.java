@@ -1,0 +1,146 @@
+package org.armgals.maam.sim;
+
+import java.util.ArrayList;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Map;
+import org.armgals.maam.spi.Leg;
+import org.ode4j.math.DQuaternion;
+import org.ode4j.math.DQuaternionC;
+import org.ode4j.math.DVector3;
+import org.ode4j.math.DVector3C;
+import org.ode4j.ode.DBody;
+import org.ode4j.ode.DCapsule;
+import org.ode4j.ode.DMass;
+import org.ode4j.ode.DRay;
+import org.ode4j.ode.DSphere;
+import org.ode4j.ode.DUniversalJoint;
+import org.ode4j.ode.OdeHelper;
+
+/** One atom's physics and state: kernel, six legs, battery, failure, inbox, pending push. */
+final class AtomModel {
+
+  final int id;
+  final AtomParams params;
+  final Cone cone;
+
+  final DBody kernel;
+  final Map<Leg, LegModel> legs = new EnumMap<>(Leg.class);
+
+  /** The kernel's up axis at the start, in the kernel's frame: what tilt is measured from. */
+  private final DVector3 upLocal;
+
+  double energy;
+  boolean failed;
+  boolean emptyReported;
+
+  /** The messages that arrived at the start of the current control cycle. */
+  final List<ReceivedMessage> inbox = new ArrayList<>();
+
+  double pushX;
+  double pushY;
+  double pushZ;
+
+  AtomModel(Physics physics, Scene.Placement placement, AtomParams params) {
+    this.id = placement.id();
+    this.params = params;
+    this.cone = new Cone(params.coneHalfAngle());
+    this.energy = params.batteryCapacity();
+    DQuaternion q = Frames.of(placement.orientation());
+    Vec3 c = placement.position();
+    DQuaternion inverse = new DQuaternion(q.get0(), -q.get1(), -q.get2(), -q.get3());
+    upLocal = Frames.rotate(inverse, 0, 0, 1);
+
+    kernel = OdeHelper.createBody(physics.world);
+    DMass mass = OdeHelper.createMass();
+    mass.setSphereTotal(params.kernelMass(), params.kernelRadius());
+    kernel.setMass(mass);
+    kernel.setPosition(c.x(), c.y(), c.z());
+    kernel.setQuaternion(q);
+    DSphere sphere = OdeHelper.createSphere(physics.space, params.kernelRadius());
+    sphere.setBody(kernel);
+    sphere.setData(new GeomTag(GeomTag.Kind.KERNEL, this, null));
+
+    double r = params.kernelRadius();
+    double half = params.legLength() / 2;
+    double cylinder = params.legLength() - 2 * params.legRadius();
+    for (Leg leg : Leg.values()) {
+      DVector3 d = Frames.rotate(q, leg.x(), leg.y(), leg.z());
+      DBody body = OdeHelper.createBody(physics.world);
+      DMass legMass = OdeHelper.createMass();
+      legMass.setCapsuleTotal(params.legMass(), 3, params.legRadius(), cylinder);
+      body.setMass(legMass);
+      body.setPosition(
+          c.x() + d.get0() * (r + half),
+          c.y() + d.get1() * (r + half),
+          c.z() + d.get2() * (r + half));
+      body.setQuaternion(Frames.multiply(q, Frames.zOnto(leg)));
+      DCapsule capsule = OdeHelper.createCapsule(physics.space, params.legRadius(), cylinder);
+      capsule.setBody(body);
+
+      DUniversalJoint joint = OdeHelper.createUniversalJoint(physics.world);
+      joint.attach(kernel, body);
+      joint.setAnchor(c.x() + d.get0() * r, c.y() + d.get1() * r, c.z() + d.get2() * r);
+      double[] a1 = Frames.axis1(leg);
+      double[] a2 = Frames.axis2(leg);
+      joint.setAxis1(Frames.rotate(q, a1[0], a1[1], a1[2]));
+      joint.setAxis2(Frames.rotate(q, a2[0], a2[1], a2[2]));
+
+      DRay ray = OdeHelper.createRay(physics.space, params.proximityRange());
+      ray.disable();
+      LegModel model = new LegModel(this, leg, body, joint, ray);
+      model.locked = params.autoLock();
+      model.proximity = params.proximityRange();
+      capsule.setData(new GeomTag(GeomTag.Kind.LEG, this, model));
+      ray.setData(new GeomTag(GeomTag.Kind.RAY, this, model));
+      legs.put(leg, model);
+    }
+  }
+
+  LegModel leg(Leg leg) {
+    return legs.get(leg);
+  }
+
+  boolean motorsOn() {
+    return !failed && energy > 0;
+  }
+
+  /** The angle between the kernel's up axis now and at the start (rad). */
+  double tilt() {
+    DVector3 up =
+        Frames.rotate(kernel.getQuaternion(), upLocal.get0(), upLocal.get1(), upLocal.get2());
+    return Math.acos(Math.max(-1, Math.min(1, up.get2())));
+  }
+
+  Vec3 position() {
+    DVector3C p = kernel.getPosition();
+    return new Vec3(p.get0(), p.get1(), p.get2());
+  }
+
+  Quat orientation() {
+    DQuaternionC q = kernel.getQuaternion();
+    double n = q.length();
+    return new Quat(q.get0() / n, q.get1() / n, q.get2() / n, q.get3() / n);
+  }
+
+  /**
+   * Drains the battery for one physics step of {@code dt} seconds: the idle draw plus the motors'
+   * mechanical power over their efficiency. Returns true the step it runs empty.
+   */
+  boolean drain(double dt) {
+    for (LegModel leg : legs.values()) {
+      leg.readTorques();
+    }
+    if (failed || energy <= 0) {
+      return false;
+    }
+    double power = params.idleDraw();
+    for (LegModel leg : legs.values()) {
+      if (!leg.failed) {
+        power += leg.motorPower() / params.motorEfficiency();
+      }
+    }
+    energy = Math.max(0, energy - power * dt);
+    return energy == 0;
+  }
+}

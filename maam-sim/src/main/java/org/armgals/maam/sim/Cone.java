@@ -1,0 +1,60 @@
+package org.armgals.maam.sim;
+
+/**
+ * The cone a leg moves in, over its two joint angles. A universal joint turned by {@code a1} and
+ * {@code a2} tilts the leg by {@code t} with {@code cos t = cos a1 · cos a2}; the leg is in the
+ * cone when {@code t <= halfAngle}.
+ */
+final class Cone {
+
+  private final double halfAngle;
+  private final double cosHalf;
+
+  Cone(double halfAngle) {
+    this.halfAngle = halfAngle;
+    this.cosHalf = Math.cos(halfAngle);
+  }
+
+  /** The tilt of a leg turned by {@code (a1, a2)} (rad). */
+  static double tilt(double a1, double a2) {
+    return Math.acos(Math.min(1, Math.cos(a1) * Math.cos(a2)));
+  }
+
+  /**
+   * The largest magnitude of one angle that keeps the leg in the cone when the other is {@code
+   * other}: the stop of one axis, following the other.
+   */
+  double stopGiven(double other) {
+    double c = Math.cos(other);
+    if (c <= cosHalf) {
+      return 0;
+    }
+    return Math.acos(Math.min(1, cosHalf / c));
+  }
+
+  /**
+   * {@code (a1, a2)} scaled down onto the cone's edge if it is outside, written to {@code out} (the
+   * direction of the tilt is kept; {@code out} may be the input's array).
+   */
+  void clamp(double a1, double a2, double[] out) {
+    a1 = Math.max(-halfAngle, Math.min(halfAngle, a1));
+    a2 = Math.max(-halfAngle, Math.min(halfAngle, a2));
+    if (tilt(a1, a2) <= halfAngle) {
+      out[0] = a1;
+      out[1] = a2;
+      return;
+    }
+    double lo = 0;
+    double hi = 1;
+    for (int i = 0; i < 40; i++) {
+      double mid = (lo + hi) / 2;
+      if (tilt(a1 * mid, a2 * mid) <= halfAngle) {
+        lo = mid;
+      } else {
+        hi = mid;
+      }
+    }
+    out[0] = a1 * lo;
+    out[1] = a2 * lo;
+  }
+}

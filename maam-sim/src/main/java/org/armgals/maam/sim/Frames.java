@@ -1,0 +1,80 @@
+package org.armgals.maam.sim;
+
+import org.armgals.maam.spi.Leg;
+import org.ode4j.math.DQuaternion;
+import org.ode4j.math.DQuaternionC;
+import org.ode4j.math.DVector3;
+
+/** Quaternion arithmetic the engine's public API lacks. */
+final class Frames {
+
+  private Frames() {}
+
+  static DQuaternion of(Quat q) {
+    return new DQuaternion(q.w(), q.x(), q.y(), q.z());
+  }
+
+  /** {@code a · b}: rotate by {@code b}, then by {@code a}. */
+  static DQuaternion multiply(DQuaternionC a, DQuaternionC b) {
+    double aw = a.get0();
+    double ax = a.get1();
+    double ay = a.get2();
+    double az = a.get3();
+    double bw = b.get0();
+    double bx = b.get1();
+    double by = b.get2();
+    double bz = b.get3();
+    return new DQuaternion(
+        aw * bw - ax * bx - ay * by - az * bz,
+        aw * bx + ax * bw + ay * bz - az * by,
+        aw * by - ax * bz + ay * bw + az * bx,
+        aw * bz + ax * by - ay * bx + az * bw);
+  }
+
+  /** The vector {@code (x, y, z)} rotated by {@code q}. */
+  static DVector3 rotate(DQuaternionC q, double x, double y, double z) {
+    double w = q.get0();
+    double qx = q.get1();
+    double qy = q.get2();
+    double qz = q.get3();
+    // t = 2 q_vec × v; v' = v + w t + q_vec × t
+    double tx = 2 * (qy * z - qz * y);
+    double ty = 2 * (qz * x - qx * z);
+    double tz = 2 * (qx * y - qy * x);
+    return new DVector3(
+        x + w * tx + (qy * tz - qz * ty),
+        y + w * ty + (qz * tx - qx * tz),
+        z + w * tz + (qx * ty - qy * tx));
+  }
+
+  /** The rotation taking +z onto the unit axis {@code (x, y, z)} of a leg. */
+  static DQuaternion zOnto(Leg leg) {
+    double h = Math.sqrt(0.5);
+    return switch (leg) {
+      case PZ -> new DQuaternion(1, 0, 0, 0);
+      case MZ -> new DQuaternion(0, 1, 0, 0);
+      case PX -> new DQuaternion(h, 0, h, 0);
+      case MX -> new DQuaternion(h, 0, -h, 0);
+      case PY -> new DQuaternion(h, -h, 0, 0);
+      case MY -> new DQuaternion(h, h, 0, 0);
+    };
+  }
+
+  /** The first tilt axis of {@code leg}, in the atom's frame. */
+  static double[] axis1(Leg leg) {
+    return switch (leg) {
+      case PX, MX -> new double[] {0, 1, 0};
+      case PY, MY -> new double[] {0, 0, 1};
+      case PZ, MZ -> new double[] {1, 0, 0};
+    };
+  }
+
+  /** The second tilt axis of {@code leg}, in the atom's frame. */
+  static double[] axis2(Leg leg) {
+    return switch (leg) {
+      case PX, MX -> new double[] {0, 0, 1};
+      case PY, MY -> new double[] {1, 0, 0};
+      case PZ, MZ -> new double[] {0, 1, 0};
+    };
+  }
+}

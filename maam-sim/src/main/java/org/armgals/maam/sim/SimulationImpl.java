@@ -1,0 +1,357 @@
+package org.armgals.maam.sim;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.OptionalInt;
+import java.util.TreeMap;
+import org.armgals.maam.sim.spi.Controller;
+import org.armgals.maam.sim.spi.Pacer;
+import org.armgals.maam.spi.Body;
+import org.armgals.maam.spi.Leg;
+import org.jspecify.annotations.Nullable;
+
+/** The simulation: see {@link Simulation} for the order of a control cycle. */
+final class SimulationImpl implements Simulation {
+
+  private final Scene scene;
+  private final Physics physics;
+  private final TreeMap<Integer, BodyView> bodies = new TreeMap<>();
+  private final List<AtomModel> atoms = new ArrayList<>();
+  private final Map<Integer, Controller> controllers = new HashMap<>();
+  private final List<Binding> bindings = new ArrayList<>();
+  private final MessageBus messages;
+  private final TipMatcher tips;
+  private final Pacer pacer;
+  private final @Nullable TraceWriter trace;
+  private final long stepNanos;
+  private final int stepsPerCycle;
+  private final double dt;
+  private final List<SimEvent> events = new ArrayList<>();
+  private List<SimEvent> lastEvents = List.of();
+  private long cycle;
+  private long timeNanos;
+  private boolean closed;
+
+  SimulationImpl(SimulationBuilder b) {
+    this.scene = b.scene;
+    this.stepNanos = b.stepNanos;
+    this.stepsPerCycle = (int) (b.periodNanos / b.stepNanos);
+    this.dt = b.stepNanos / 1e9;
+    this.pacer = b.pacer;
+    this.messages = new MessageBus(b.seed, b.messageDelayNanos, b.packetLoss);
+    this.physics = new Physics(scene, b.seed);
+    this.tips = new TipMatcher(scene.params());
+    List<Scene.Placement> placements = new ArrayList<>(scene.atoms());
+    placements.sort(Comparator.comparingInt(Scene.Placement::id));
+    for (Scene.Placement p : placements) {
+      AtomModel atom = new AtomModel(physics, p, scene.params());
+      atoms.add(atom);
+      bodies.put(p.id(), new BodyView(this, atom, sense(atom)));
+      Controller c = b.controllerById.get(p.id());
+      controllers.put(p.id(), c != null ? c : b.controllers.apply(p.id()));
+    }
+    for (Scene.Bond bond : scene.bonds()) {
+      LegModel a = bodies.get(bond.atomA()).model.leg(bond.legA());
+      LegModel c = bodies.get(bond.atomB()).model.leg(bond.legB());
+      if (!tips.inTolerance(a, c)) {
+        throw new IllegalArgumentException(
+            "scene '"
+                + scene.name()
+                + "': bond "
+                + bond
+                + " joins tips "
+                + a.tip().distance(c.tip())
+                + " m apart or misaligned; expected within "
+                + scene.params().bindDistance()
+                + " m and "
+                + Math.toDegrees(scene.params().bindAlignment())
+                + " degrees");
+      }
+      a.locked = true;
+      c.locked = true;
+      bindings.add(new Binding(physics, a, c));
+    }
+    this.trace = b.trace == null ? null : new TraceWriter(b.trace);
+    if (trace != null) {
+      trace.header(scene, b.seed, b.stepNanos, b.periodNanos, atomIds());
+    }
+  }
+
+  @Override
+  public Scene scene() {
+    return scene;
+  }
+
+  @Override
+  public List<Integer> atomIds() {
+    return List.copyOf(bodies.keySet());
+  }
+
+  @Override
+  public AtomBody atom(int id) {
+    return view(id);
+  }
+
+  private BodyView view(int id) {
+    BodyView view = bodies.get(id);
+    if (view == null) {
+      throw new IllegalArgumentException(
+          "no atom " + id + " in scene '" + scene.name() + "'; atoms: " + bodies.keySet());
+    }
+    return view;
+  }
+
+  @Override
+  public Body body(int id) {
+    return view(id).spiBody();
+  }
+
+  @Override
+  public void setController(int id, Controller controller) {
+    view(id);
+    controllers.put(id, java.util.Objects.requireNonNull(controller, "controller"));
+  }
+
+  @Override
+  public long cycle() {
+    return cycle;
+  }
+
+  @Override
+  public long timeNanos() {
+    return timeNanos;
+  }
+
+  @Override
+  public List<SimEvent> lastEvents() {
+    return lastEvents;
+  }
+
+  @Override
+  public void runCycle() {
+    if (closed) {
+      throw new IllegalStateException("simulation of scene '" + scene.name() + "' is closed");
+    }
+    long start = timeNanos;
+    senseAll();
+    for (AtomModel atom : atoms) {
+      atom.inbox.clear();
+    }
+    messages.deliver(start);
+    bindLockedTips();
+    for (AtomModel atom : atoms) {
+      if (!atom.failed) {
+        controllers.get(atom.id).onCycle(bodies.get(atom.id), cycle);
+      }
+    }
+    for (int i = 0; i < stepsPerCycle; i++) {
+      physicsStep();
+    }
+    for (AtomModel atom : atoms) {
+      atom.pushX = 0;
+      atom.pushY = 0;
+      atom.pushZ = 0;
+    }
+    if (trace != null) {
+      List<AtomSensors> readings = new ArrayList<>(atoms.size());
+      for (AtomModel atom : atoms) {
+        readings.add(bodies.get(atom.id).sensors);
+      }
+      trace.cycle(cycle, start, readings, events);
+    }
+    lastEvents = List.copyOf(events);
+    events.clear();
+    cycle++;
+    pacer.pace(timeNanos);
+  }
+
+  private void physicsStep() {
+    for (AtomModel atom : atoms) {
+      if (atom.pushX != 0 || atom.pushY != 0 || atom.pushZ != 0) {
+        atom.kernel.addForce(atom.pushX, atom.pushY, atom.pushZ);
+      }
+      boolean on = atom.motorsOn();
+      for (LegModel leg : atom.legs.values()) {
+        leg.servo(on);
+      }
+    }
+    physics.step(dt);
+    timeNanos += stepNanos;
+    for (AtomModel atom : atoms) {
+      if (atom.drain(dt)) {
+        events.add(new SimEvent.BatteryEmpty(timeNanos, atom.id));
+      }
+    }
+    for (int i = 0; i < bindings.size(); i++) {
+      Binding binding = bindings.get(i);
+      double force = binding.force();
+      if (force > scene.params().bindStrength()) {
+        binding.release();
+        binding.a.locked = false;
+        binding.b.locked = false;
+        bindings.remove(i--);
+        events.add(
+            new SimEvent.BindingBroke(
+                timeNanos,
+                binding.a.atom.id,
+                binding.a.leg,
+                binding.b.atom.id,
+                binding.b.leg,
+                force));
+      }
+    }
+  }
+
+  private void senseAll() {
+    for (AtomModel atom : atoms) {
+      for (LegModel leg : atom.legs.values()) {
+        if (atom.failed || leg.failed) {
+          continue;
+        }
+        if (leg.binding != null) {
+          leg.proximity = 0;
+        } else {
+          leg.aimRay();
+          leg.ray.enable();
+        }
+      }
+    }
+    physics.castRays();
+    for (AtomModel atom : atoms) {
+      for (LegModel leg : atom.legs.values()) {
+        leg.ray.disable();
+      }
+      bodies.get(atom.id).sensors = sense(atom);
+      for (LegModel leg : atom.legs.values()) {
+        leg.contact = false;
+      }
+    }
+  }
+
+  private AtomSensors sense(AtomModel atom) {
+    List<LegSensors> legs = new ArrayList<>(6);
+    for (Leg l : Leg.values()) {
+      LegModel leg = atom.leg(l);
+      if (atom.failed || leg.failed) {
+        legs.add(
+            new LegSensors(
+                l, 0, 0, 0, 0, false, false, OptionalInt.empty(), Optional.empty(), 0, true));
+      } else {
+        Binding b = leg.binding;
+        legs.add(
+            new LegSensors(
+                l,
+                leg.joint.getAngle1(),
+                leg.joint.getAngle2(),
+                leg.torque1,
+                leg.torque2,
+                leg.contact,
+                leg.locked,
+                b == null ? OptionalInt.empty() : OptionalInt.of(b.other(leg).atom.id),
+                b == null ? Optional.empty() : Optional.of(b.other(leg).leg),
+                leg.proximity,
+                false));
+      }
+    }
+    if (atom.failed) {
+      return new AtomSensors(
+          atom.id, timeNanos, atom.position(), atom.orientation(), 0, 0, true, legs);
+    }
+    return new AtomSensors(
+        atom.id,
+        timeNanos,
+        atom.position(),
+        atom.orientation(),
+        atom.tilt(),
+        atom.energy,
+        false,
+        legs);
+  }
+
+  private void bindLockedTips() {
+    for (LegModel[] pair : tips.pairs(atoms)) {
+      bindings.add(new Binding(physics, pair[0], pair[1]));
+      events.add(
+          new SimEvent.Bound(
+              timeNanos, pair[0].atom.id, pair[0].leg, pair[1].atom.id, pair[1].leg));
+    }
+  }
+
+  void unbind(LegModel leg) {
+    leg.locked = false;
+    Binding b = leg.binding;
+    if (b != null) {
+      LegModel other = b.other(leg);
+      b.release();
+      bindings.remove(b);
+      events.add(new SimEvent.Unbound(timeNanos, leg.atom.id, leg.leg, other.atom.id, other.leg));
+    }
+  }
+
+  boolean send(LegModel leg, String payload) {
+    Binding b = leg.binding;
+    if (leg.atom.failed || leg.failed || b == null) {
+      return false;
+    }
+    LegModel to = b.other(leg);
+    ReceivedMessage m = new ReceivedMessage(leg.atom.id, leg.leg, to.leg, timeNanos, payload);
+    if (!messages.send(timeNanos, to.atom, m)) {
+      events.add(new SimEvent.MessageLost(timeNanos, leg.atom.id, leg.leg));
+    }
+    return true;
+  }
+
+  @Override
+  public void push(int id, Vec3 force) {
+    AtomModel atom = view(id).model;
+    atom.pushX += force.x();
+    atom.pushY += force.y();
+    atom.pushZ += force.z();
+  }
+
+  @Override
+  public void failAtom(int id) {
+    AtomModel atom = view(id).model;
+    if (!atom.failed) {
+      atom.failed = true;
+      atom.inbox.clear();
+      events.add(new SimEvent.AtomFailed(timeNanos, id));
+    }
+  }
+
+  @Override
+  public void failLeg(int id, Leg leg) {
+    LegModel model = view(id).model.leg(leg);
+    if (!model.failed) {
+      model.failed = true;
+      events.add(new SimEvent.LegFailed(timeNanos, id, leg));
+    }
+  }
+
+  @Override
+  public void setPacketLoss(double probability) {
+    messages.setLoss(probability);
+  }
+
+  @Override
+  public void note(int id, String text) {
+    view(id);
+    events.add(new SimEvent.Note(timeNanos, id, text));
+  }
+
+  @Override
+  public void close() {
+    if (closed) {
+      return;
+    }
+    closed = true;
+    if (trace != null) {
+      trace.flush();
+    }
+    physics.destroy();
+  }
+}

@@ -1,0 +1,86 @@
+package org.armgals.maam.sim;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.time.Duration;
+import java.util.SplittableRandom;
+import org.armgals.maam.spi.Leg;
+import org.junit.jupiter.api.Test;
+
+class PhysicsSanityTest {
+
+  @Test
+  void anAtomAtRestStaysAtRest() {
+    try (Simulation s = Simulation.builder(Scenes.builtIn("single")).build()) {
+      s.runFor(Duration.ofMillis(500));
+      AtomSensors settled = s.atom(1).sensors();
+      s.runFor(Duration.ofSeconds(2));
+      AtomSensors later = s.atom(1).sensors();
+      assertThat(TestScenes.distance(settled.position(), later.position())).isLessThan(0.002);
+      assertThat(Math.abs(later.tilt() - settled.tilt())).isLessThan(0.01);
+      assertThat(later.position().z()).isBetween(0.05, 0.08);
+      for (Leg leg : new Leg[] {Leg.MX, Leg.MY, Leg.MZ}) {
+        assertThat(later.leg(leg).tipContact()).as("tip %s on the ground", leg).isTrue();
+      }
+      assertThat(later.leg(Leg.PZ).tipContact()).isFalse();
+    }
+  }
+
+  @Test
+  void aLegNeverLeavesItsCone() {
+    double half = AtomParams.defaults().coneHalfAngle();
+    SplittableRandom random = new SplittableRandom(3);
+    try (Simulation s =
+        Simulation.builder(Scenes.builtIn("chain4"))
+            .controllers(
+                id ->
+                    (body, cycle) -> {
+                      for (Leg leg : Leg.values()) {
+                        body.setLegTarget(leg, random.nextDouble(-2, 2), random.nextDouble(-2, 2));
+                      }
+                    })
+            .build()) {
+      for (int i = 0; i < 150; i++) {
+        if (i % 10 == 0) {
+          s.push(1 + i % 4, new Vec3(random.nextDouble(-20, 20), random.nextDouble(-20, 20), 5));
+        }
+        s.runCycle();
+        for (int id : s.atomIds()) {
+          for (LegSensors leg : s.atom(id).sensors().legs()) {
+            assertThat(leg.coneAngle())
+                .as("cycle %d atom %d leg %s", i, id, leg.leg())
+                .isLessThanOrEqualTo(half + 0.02);
+          }
+        }
+      }
+    }
+  }
+
+  @Test
+  void aBoundPairMovesAsOne() {
+    try (Simulation s = Simulation.builder(TestScenes.boundPair("")).build()) {
+      Vec3 start2 = s.atom(2).sensors().position();
+      double apart = TestScenes.distance(start2, s.atom(1).sensors().position());
+      for (int i = 0; i < 100; i++) {
+        s.push(1, new Vec3(0, 3, 1));
+        s.runCycle();
+        AtomSensors a = s.atom(1).sensors();
+        AtomSensors b = s.atom(2).sensors();
+        assertThat(TestScenes.distance(a.position(), b.position())).isCloseTo(apart, within(0.002));
+        double dot =
+            a.orientation().w() * b.orientation().w()
+                + a.orientation().x() * b.orientation().x()
+                + a.orientation().y() * b.orientation().y()
+                + a.orientation().z() * b.orientation().z();
+        assertThat(Math.abs(dot)).isGreaterThan(Math.cos(Math.toRadians(2) / 2));
+      }
+      assertThat(TestScenes.distance(s.atom(2).sensors().position(), start2)).isGreaterThan(0.05);
+      assertThat(s.atom(1).sensors().leg(Leg.PX).neighbour()).hasValue(2);
+      assertThat(s.atom(2).sensors().leg(Leg.MX).neighbour()).hasValue(1);
+    }
+  }
+
+  private static org.assertj.core.data.Offset<Double> within(double d) {
+    return org.assertj.core.data.Offset.offset(d);
+  }
+}

@@ -1,0 +1,73 @@
+package org.armgals.maam.sim;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
+import java.util.HexFormat;
+import java.util.List;
+import java.util.SplittableRandom;
+import org.armgals.maam.spi.Leg;
+import org.junit.jupiter.api.Test;
+
+class TraceAndDeterminismTest {
+
+  /** Runs the chain of four with seeded random targets, messages, loss and faults. */
+  private static String trace(long seed) {
+    StringWriter out = new StringWriter();
+    try (Simulation s =
+        Simulation.builder(Scenes.builtIn("chain4"))
+            .seed(seed)
+            .packetLoss(0.3)
+            .trace(out)
+            .controllers(
+                id -> {
+                  SplittableRandom random = new SplittableRandom(id);
+                  return (body, cycle) -> {
+                    body.setLegTarget(Leg.MZ, random.nextDouble(-0.5, 0.5), 0.2);
+                    body.send(Leg.PX, "c" + cycle);
+                    body.send(Leg.MX, "c" + cycle);
+                  };
+                })
+            .build()) {
+      s.runCycles(40);
+      s.failLeg(2, Leg.MZ);
+      s.note(3, "meta: schema \"walk\" replaced");
+      s.runCycles(40);
+    }
+    return out.toString();
+  }
+
+  private static String sha256(String text) throws NoSuchAlgorithmException {
+    return HexFormat.of()
+        .formatHex(
+            MessageDigest.getInstance("SHA-256").digest(text.getBytes(StandardCharsets.UTF_8)));
+  }
+
+  @Test
+  void sameSeedAndInputsGiveTheSameTraceBitForBit() throws NoSuchAlgorithmException {
+    String first = trace(42);
+    String second = trace(42);
+    assertThat(sha256(second)).isEqualTo(sha256(first));
+    assertThat(sha256(trace(43))).isNotEqualTo(sha256(first));
+  }
+
+  @Test
+  void theTraceHasAHeaderThenOneLinePerCycleWithAtomsAndEvents() {
+    List<String> lines = trace(7).lines().toList();
+    assertThat(lines).hasSize(81);
+    assertThat(lines.get(0))
+        .startsWith("{\"type\":\"header\",\"format\":\"armgals-maam-sim-trace\",\"version\":1,")
+        .contains("\"scene\":\"chain4\"", "\"seed\":7", "\"atoms\":[1,2,3,4]", "\"bindStrength\":");
+    assertThat(lines.get(1)).startsWith("{\"type\":\"cycle\",\"cycle\":0,\"t\":0,\"atoms\":[");
+    assertThat(lines.get(1)).contains("{\"id\":1,\"p\":[", "\"energy\":", "\"legs\":[[");
+    assertThat(lines.get(41))
+        .contains("{\"t\":400000000,\"type\":\"legFailed\",\"atom\":2,\"leg\":\"-z\"}")
+        .contains(
+            "{\"t\":400000000,\"type\":\"note\",\"atom\":3,\"text\":\"meta: schema \\\"walk\\\""
+                + " replaced\"}");
+    assertThat(String.join("\n", lines)).contains("\"type\":\"messageLost\"");
+  }
+}
