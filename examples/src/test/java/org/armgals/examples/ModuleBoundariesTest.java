@@ -6,7 +6,13 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import com.tngtech.archunit.core.domain.JavaClasses;
 import com.tngtech.archunit.core.importer.ClassFileImporter;
 import com.tngtech.archunit.core.importer.ImportOption;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
 import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.stream.Collectors;
 import org.armgals.active.ActiveContext;
 import org.armgals.active.ActiveException;
 import org.armgals.active.ActiveObject;
@@ -57,6 +63,8 @@ import org.armgals.active.spi.ObjectListener;
 import org.armgals.active.spi.Transport;
 import org.armgals.examples.archfixture.alpha.Api;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 
 /**
  * DESIGN.md's module boundaries, over every armgals class on this module's class path (examples
@@ -162,6 +170,38 @@ class ModuleBoundariesTest {
   @Test
   void armActiveExportsOnlyItsApi() {
     ModuleRules.onlyTheApiIsPublic("org.armgals.active", ACTIVE_API).check(ARMGALS);
+  }
+
+  /** The other modules' API lists, in {@code src/test/resources/api/<module>.txt}. */
+  @ParameterizedTest(name = "{0} exports only its API")
+  @CsvSource({
+    "arm-representation, org.armgals.representation",
+    "arm-kernel, org.armgals.kernel",
+    "maam-framework, org.armgals.maam",
+    "maam-sim, org.armgals.maam.sim"
+  })
+  void eachModuleExportsOnlyItsListedApi(String module, String root) throws IOException {
+    Set<String> api = apiList(module);
+    assertThat(api).as("the API list of %s", module).isNotEmpty();
+    assertThat(api)
+        .as("every listed type of %s exists", module)
+        .allSatisfy(name -> assertThat(ARMGALS.contain(name)).as(name).isTrue());
+    List<String> nested = MODULE_ROOTS.stream().filter(r -> r.startsWith(root + ".")).toList();
+    ModuleRules.onlyTheApiIsPublic(root, api, nested).check(ARMGALS);
+  }
+
+  private static Set<String> apiList(String module) throws IOException {
+    try (InputStream in =
+        ModuleBoundariesTest.class.getResourceAsStream("/api/" + module + ".txt")) {
+      if (in == null) {
+        throw new IllegalStateException("no API list for " + module);
+      }
+      return new String(in.readAllBytes(), StandardCharsets.UTF_8)
+          .lines()
+          .map(String::strip)
+          .filter(l -> !l.isEmpty() && !l.startsWith("#"))
+          .collect(Collectors.toCollection(TreeSet::new));
+    }
   }
 
   @Test

@@ -36,7 +36,26 @@ final class ModuleRules {
    * of {@code api}; all others stay package-private (STYLE.md rule 1: export little).
    */
   static ArchRule onlyTheApiIsPublic(String rootPackage, Collection<Class<?>> api) {
-    Set<String> names = api.stream().map(Class::getName).collect(Collectors.toSet());
+    return onlyTheApiIsPublic(
+        rootPackage, api.stream().map(Class::getName).collect(Collectors.toSet()), List.of());
+  }
+
+  /**
+   * As {@link #onlyTheApiIsPublic(String, Collection)}, with the API given by binary class names,
+   * leaving out the packages of other modules nested in this one ({@code org.armgals.maam.sim} in
+   * {@code org.armgals.maam}).
+   */
+  static ArchRule onlyTheApiIsPublic(
+      String rootPackage, Set<String> names, List<String> nestedModuleRoots) {
+    DescribedPredicate<JavaClass> nested =
+        DescribedPredicate.describe(
+            "in a nested module " + nestedModuleRoots,
+            c ->
+                nestedModuleRoots.stream()
+                    .anyMatch(
+                        r ->
+                            c.getPackageName().equals(r)
+                                || c.getPackageName().startsWith(r + ".")));
     DescribedPredicate<JavaClass> inApi =
         DescribedPredicate.describe("in the public API list", c -> names.contains(c.getName()));
     return classes()
@@ -45,6 +64,7 @@ final class ModuleRules {
         .and()
         .resideOutsideOfPackage("..internal..")
         .and(DescribedPredicate.not(inApi))
+        .and(DescribedPredicate.not(nested))
         .should()
         .notHaveModifier(JavaModifier.PUBLIC)
         .because("STYLE.md rule 1: implementations are package-private; the API list is deliberate")
