@@ -90,5 +90,9 @@ if (($(jdk_major "$(dirname "$(dirname "$java")")") >= 23)); then
   # without the warning.
   opts+=(--sun-misc-unsafe-memory-access=allow)
 fi
+if (($(jdk_major "$(dirname "$(dirname "$java")")") >= 22)); then
+  # Artemis loads its native journal library at start-up (unused here): allowed, without the warning.
+  opts+=(--enable-native-access=ALL-UNNAMED)
+fi
 echo "# $("$java" -version 2>&1 | head -1); options: ${opts[*]}; $(nproc) cores" >&2
 exec "$java" "${opts[@]}" -cp "$jar" org.armgals.bench.broker.BrokerBench "${args[@]}"
