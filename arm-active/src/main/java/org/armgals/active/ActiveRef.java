@@ -56,6 +56,19 @@ public interface ActiveRef<S> {
   <R extends @Nullable Object> FutureValue<R> call(SynchronizedMethodRequest<? super S, R> request);
 
   /**
+   * Sends a {@link Request}, a data event whose answer, given by the receiving servant's {@link
+   * EventProcessor#answer}, completes the returned future. The same call works on an object of this
+   * runtime and on one of another runtime reached through a transport (location transparency): the
+   * request and its answer then travel as messages, and the answer must be a value the transport's
+   * codec allows.
+   *
+   * @throws IllegalArgumentException the request's destination is not this object
+   */
+  default <R extends @Nullable Object> FutureValue<R> ask(Request<R> request) {
+    return Requests.ask(this, request);
+  }
+
+  /**
    * A proxy implementing {@code type} whose calls become requests to this object. {@code type} must
    * be an interface implemented by the servant, and each of its methods must return {@code void} (a
    * one-way request), {@link Future} (a signal) or {@link FutureValue} (a synchronized request).

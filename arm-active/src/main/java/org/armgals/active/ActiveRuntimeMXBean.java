@@ -33,6 +33,18 @@ public interface ActiveRuntimeMXBean {
   /** Late instants of the runtime's clocks. */
   long getOverruns();
 
+  /** Events the transport handed to the broker. */
+  long getTransportSent();
+
+  /** Events the transport took from the broker. */
+  long getTransportReceived();
+
+  /** Transport messages that carried more than one event. */
+  long getTransportBatches();
+
+  /** Inbound transport messages rejected: the dead-letter count. */
+  long getTransportRejected();
+
   /** Worker threads alive (more than the configured number while some are blocked). */
   int getWorkers();
 }

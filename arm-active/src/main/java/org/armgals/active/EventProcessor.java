@@ -1,5 +1,7 @@
 package org.armgals.active;
 
+import org.jspecify.annotations.Nullable;
+
 /**
  * A servant that takes data events: every queued event that is not a {@link Callable} is handed to
  * {@link #process}, and so is the {@link FutureEvent} of each reply a synchronous object takes. A
@@ -25,4 +27,17 @@ public interface EventProcessor {
    *     org.armgals.active.spi.ObjectListener}, and the object goes on with its next event
    */
   void process(Event event) throws Exception;
+
+  /**
+   * Answers a {@link Request} sent with {@link ActiveRef#ask}; the result completes the sender's
+   * future, in this runtime or across a transport. {@link #isProcessable} guards requests too. The
+   * default refuses: a servant that takes requests overrides it.
+   *
+   * @return the answer, of the type the request names
+   * @throws Exception any failure; it completes the sender's future exceptionally
+   */
+  default @Nullable Object answer(Request<?> request) throws Exception {
+    throw new UnsupportedOperationException(
+        getClass().getName() + " does not answer requests; it was asked " + request);
+  }
 }

@@ -6,6 +6,38 @@ import org.jspecify.annotations.Nullable;
 final class Requests {
   private Requests() {}
 
+  /**
+   * {@link ActiveRef#ask} on an object of this runtime: a guarded synchronized request that hands
+   * the data request to the servant's {@link EventProcessor#answer}.
+   */
+  @SuppressWarnings("unchecked")
+  static <R extends @Nullable Object> FutureValue<R> ask(ActiveRef<?> ref, Request<R> request) {
+    java.util.Objects.requireNonNull(request, "request");
+    if (!ref.address().equals(request.destination())) {
+      throw new IllegalArgumentException(
+          "request "
+              + request
+              + " is addressed to "
+              + request.destination()
+              + ", not "
+              + ref.address());
+    }
+    return ((ActiveRef<Object>) ref)
+        .callWhen(
+            s -> processor(s, request).isProcessable(request),
+            s -> (R) processor(s, request).answer(request));
+  }
+
+  private static EventProcessor processor(Object servant, Request<?> request) {
+    if (servant instanceof EventProcessor p) {
+      return p;
+    }
+    throw new UnsupportedOperationException(
+        servant.getClass().getName()
+            + " is not an EventProcessor, so it cannot answer the request "
+            + request);
+  }
+
   /** Whether a lambda request's guard (none: always) holds for {@code servant}. */
   @SuppressWarnings("unchecked")
   private static <S> boolean holds(@Nullable Guard<? super S> guard, Object servant) {

@@ -51,7 +51,7 @@ final class RuntimeImpl implements ActiveRuntime {
     this.timeSource = timeSource;
     this.dispatcher = new Dispatcher(this, name, workers);
     if (transport != null) {
-      transport.attach(name, this::deliverInbound);
+      transport.attach(name, new InboundSide());
     }
     this.mbeanName = jmx ? registerMBean() : null;
   }
@@ -109,7 +109,10 @@ final class RuntimeImpl implements ActiveRuntime {
       if (core == null) {
         throw new ObjectStoppedException(address);
       }
-      return (ActiveRef<S>) core;
+      Transport t = transport;
+      return t != null && t.routesLocalEvents()
+          ? new RemoteRef<>(address, t, (Core<S>) core)
+          : (ActiveRef<S>) core;
     }
     Transport t = transport;
     if (t == null) {
@@ -122,16 +125,30 @@ final class RuntimeImpl implements ActiveRuntime {
               + name
               + "' has no transport; give one to ActiveRuntime.builder().transport(...)");
     }
-    return new RemoteRef<>(address, t);
+    return new RemoteRef<>(address, t, null);
   }
 
-  private void deliverInbound(Address destination, Event event) {
-    Core<?> core = objects.get(destination.id());
-    if (core == null) {
-      rejected.increment();
-      throw new ObjectStoppedException(destination);
+  /** Where the transport hands this runtime's inbound events and requests. */
+  private final class InboundSide implements Transport.Inbound {
+    @Override
+    public void deliver(Address destination, Event event) {
+      target(destination).send(event);
     }
-    core.send(event);
+
+    @Override
+    public <R extends @Nullable Object> FutureValue<R> ask(
+        Address destination, Request<R> request) {
+      return Requests.ask(target(destination), request);
+    }
+
+    private Core<?> target(Address destination) {
+      Core<?> core = objects.get(destination.id());
+      if (core == null) {
+        rejected.increment();
+        throw new ObjectStoppedException(destination);
+      }
+      return core;
+    }
   }
 
   // ---------------------------------------------------------------- counters
@@ -188,7 +205,8 @@ final class RuntimeImpl implements ActiveRuntime {
         dropped.sum(),
         rejected.sum(),
         failures.sum(),
-        overruns);
+        overruns,
+        transport != null ? transport.stats() : TransportStats.NONE);
   }
 
   // ---------------------------------------------------------------- shutdown
@@ -299,6 +317,31 @@ final class RuntimeImpl implements ActiveRuntime {
     @Override
     public long getOverruns() {
       return stats().overruns();
+    }
+
+    @Override
+    public long getTransportSent() {
+      return transportStats().sent();
+    }
+
+    @Override
+    public long getTransportReceived() {
+      return transportStats().received();
+    }
+
+    @Override
+    public long getTransportBatches() {
+      return transportStats().batches();
+    }
+
+    @Override
+    public long getTransportRejected() {
+      return transportStats().rejected();
+    }
+
+    private TransportStats transportStats() {
+      Transport t = transport;
+      return t != null ? t.stats() : TransportStats.NONE;
     }
 
     @Override

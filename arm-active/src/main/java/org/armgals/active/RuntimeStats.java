@@ -12,6 +12,7 @@ package org.armgals.active;
  * @param rejected sends refused (full buffer with reject, block timeout, stopped object)
  * @param failures exceptions thrown while processing events or cycles
  * @param overruns instants of the runtime's clocks that ended late
+ * @param transport the figures of the runtime's transport ({@link TransportStats#NONE} without one)
  */
 public record RuntimeStats(
     long objects,
@@ -21,4 +22,5 @@ public record RuntimeStats(
     long dropped,
     long rejected,
     long failures,
-    long overruns) {}
+    long overruns,
+    TransportStats transport) {}

@@ -5,6 +5,9 @@ import static java.util.Objects.requireNonNull;
 import java.util.concurrent.ConcurrentHashMap;
 import org.armgals.active.Address;
 import org.armgals.active.Event;
+import org.armgals.active.FutureValue;
+import org.armgals.active.Request;
+import org.jspecify.annotations.Nullable;
 
 /** Links the runtimes of one JVM: a map from runtime name to its inbound side. */
 final class InJvmTransport implements Transport {
@@ -28,6 +31,17 @@ final class InJvmTransport implements Transport {
   public void send(Address destination, Event event) {
     requireNonNull(destination, "destination");
     requireNonNull(event, "event");
+    inbound(destination).deliver(destination, event);
+  }
+
+  @Override
+  public <R extends @Nullable Object> FutureValue<R> ask(Address destination, Request<R> request) {
+    requireNonNull(destination, "destination");
+    requireNonNull(request, "request");
+    return inbound(destination).ask(destination, request);
+  }
+
+  private Inbound inbound(Address destination) {
     Inbound inbound = runtimes.get(destination.runtime());
     if (inbound == null) {
       throw new IllegalArgumentException(
@@ -36,7 +50,7 @@ final class InJvmTransport implements Transport {
               + "' is attached to this transport; attached: "
               + runtimes.keySet());
     }
-    inbound.deliver(destination, event);
+    return inbound;
   }
 
   @Override

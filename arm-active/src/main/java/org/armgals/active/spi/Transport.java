@@ -2,6 +2,10 @@ package org.armgals.active.spi;
 
 import org.armgals.active.Address;
 import org.armgals.active.Event;
+import org.armgals.active.FutureValue;
+import org.armgals.active.Request;
+import org.armgals.active.TransportStats;
+import org.jspecify.annotations.Nullable;
 
 /**
  * Carries events between runtimes. A runtime never uses its transport for its own objects (events
@@ -16,8 +20,7 @@ import org.armgals.active.Event;
  */
 public interface Transport extends AutoCloseable {
 
-  /** Delivers inbound events to one runtime's objects. */
-  @FunctionalInterface
+  /** Delivers inbound events and requests to one runtime's objects. */
   interface Inbound {
     /**
      * Queues {@code event} to the object at {@code destination}, which names this runtime.
@@ -25,6 +28,14 @@ public interface Transport extends AutoCloseable {
      * @throws org.armgals.active.ObjectStoppedException no such object (stopped or never made)
      */
     void deliver(Address destination, Event event);
+
+    /**
+     * Queues {@code request} to the object at {@code destination}, which names this runtime, and
+     * returns the future its answer completes.
+     *
+     * @throws org.armgals.active.ObjectStoppedException no such object (stopped or never made)
+     */
+    <R extends @Nullable Object> FutureValue<R> ask(Address destination, Request<R> request);
   }
 
   /**
@@ -45,6 +56,31 @@ public interface Transport extends AutoCloseable {
    *     full buffer with a rejecting policy)
    */
   void send(Address destination, Event event);
+
+  /**
+   * Sends {@code request} to {@code destination} in another runtime; the returned future is
+   * completed by the answer (or fails with the answer's failure).
+   *
+   * @throws UnsupportedOperationException the transport cannot carry requests
+   */
+  default <R extends @Nullable Object> FutureValue<R> ask(Address destination, Request<R> request) {
+    throw new UnsupportedOperationException(
+        this + " cannot carry requests; " + request + " was not sent to " + destination);
+  }
+
+  /**
+   * Whether the runtime should route events between its own objects through this transport too
+   * ("JMS everywhere", the paper's own behavior and a benchmark baseline). Default false: local
+   * events are handed over in memory.
+   */
+  default boolean routesLocalEvents() {
+    return false;
+  }
+
+  /** The transport's figures; default {@link TransportStats#NONE}. */
+  default TransportStats stats() {
+    return TransportStats.NONE;
+  }
 
   /** Releases what the transport holds. The default does nothing. */
   @Override

@@ -1,0 +1,123 @@
+package org.armgals.active;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Comparator;
+import java.util.Optional;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.stream.Stream;
+import org.apache.activemq.artemis.core.config.impl.ConfigurationImpl;
+import org.apache.activemq.artemis.core.server.embedded.EmbeddedActiveMQ;
+import org.jspecify.annotations.Nullable;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/** {@link EmbeddedBroker} on {@link EmbeddedActiveMQ}. */
+final class EmbeddedArtemis implements EmbeddedBroker {
+  private static final Logger LOG = LoggerFactory.getLogger(EmbeddedArtemis.class);
+  private static final AtomicInteger IDS = new AtomicInteger(ProcessHandle.current().hashCode());
+
+  private final EmbeddedActiveMQ server;
+  private final String inVmUrl;
+  private final @Nullable String nettyUrl;
+  private final Path dir;
+  private final AtomicBoolean closed = new AtomicBoolean();
+
+  private EmbeddedArtemis(
+      EmbeddedActiveMQ server, String inVmUrl, @Nullable String nettyUrl, Path dir) {
+    this.server = server;
+    this.inVmUrl = inVmUrl;
+    this.nettyUrl = nettyUrl;
+    this.dir = dir;
+  }
+
+  /** A started broker; {@code port} 0: in-VM only. */
+  static EmbeddedArtemis start(int port) {
+    int id = IDS.incrementAndGet() & 0x7fff_ffff;
+    String inVm = "vm://" + id;
+    String netty = port > 0 ? "tcp://127.0.0.1:" + port : null;
+    Path dir;
+    try {
+      // Persistence is off; paging of a full address still needs a directory.
+      dir = Files.createTempDirectory("armgals-broker-");
+    } catch (IOException e) {
+      throw new IllegalStateException("cannot make the embedded broker's directory", e);
+    }
+    EmbeddedActiveMQ server = new EmbeddedActiveMQ();
+    try {
+      ConfigurationImpl c = new ConfigurationImpl();
+      c.setName("armgals-" + id);
+      c.setPersistenceEnabled(false);
+      c.setSecurityEnabled(false);
+      c.setJMXManagementEnabled(false);
+      c.setGracefulShutdownEnabled(false);
+      c.setBrokerInstance(dir.toFile());
+      c.setPagingDirectory(dir.resolve("paging").toString());
+      c.setBindingsDirectory(dir.resolve("bindings").toString());
+      c.setJournalDirectory(dir.resolve("journal").toString());
+      c.setLargeMessagesDirectory(dir.resolve("large").toString());
+      c.addAcceptorConfiguration("in-vm", inVm);
+      if (netty != null) {
+        c.addAcceptorConfiguration("netty", netty);
+      }
+      server.setConfiguration(c);
+      server.start();
+      if (!server.getActiveMQServer().isActive()) {
+        throw new IllegalStateException("the broker did not become active");
+      }
+    } catch (Exception e) {
+      stopQuietly(server);
+      delete(dir);
+      throw new IllegalStateException(
+          "embedded Artemis broker did not start ("
+              + inVm
+              + (netty != null ? ", " + netty : "")
+              + ")",
+          e);
+    }
+    LOG.info("embedded Artemis broker started on {}{}", inVm, netty != null ? " and " + netty : "");
+    return new EmbeddedArtemis(server, inVm, netty, dir);
+  }
+
+  @Override
+  public String inVmUrl() {
+    return inVmUrl;
+  }
+
+  @Override
+  public Optional<String> nettyUrl() {
+    return Optional.ofNullable(nettyUrl);
+  }
+
+  @Override
+  public void close() {
+    if (closed.compareAndSet(false, true)) {
+      stopQuietly(server);
+      delete(dir);
+      LOG.info("embedded Artemis broker {} stopped", inVmUrl);
+    }
+  }
+
+  private static void stopQuietly(EmbeddedActiveMQ server) {
+    try {
+      server.stop();
+    } catch (Exception e) {
+      LOG.warn("embedded Artemis broker did not stop cleanly", e);
+    }
+  }
+
+  private static void delete(Path dir) {
+    try (Stream<Path> files = Files.walk(dir)) {
+      files.sorted(Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
+    } catch (IOException e) {
+      LOG.warn("could not delete {}", dir, e);
+    }
+  }
+
+  @Override
+  public String toString() {
+    return "EmbeddedBroker[" + inVmUrl + (nettyUrl != null ? ", " + nettyUrl : "") + "]";
+  }
+}

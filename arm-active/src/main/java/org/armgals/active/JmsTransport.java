@@ -1,0 +1,268 @@
+package org.armgals.active;
+
+import static java.util.Objects.requireNonNull;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.armgals.active.spi.Transport;
+import org.jspecify.annotations.Nullable;
+
+/**
+ * The {@link Transport} between runtimes over Jakarta Messaging 3.1 and Apache ActiveMQ Artemis
+ * (paper §2.3, §4.1; DESIGN.md rules 5-7). Give one to {@link ActiveRuntime.Builder#transport};
+ * several runtimes may share one.
+ *
+ * <p>Events to another runtime travel as JMS messages on the paper's topics under a prefix ({@link
+ * Topic}), encoded by an explicit codec over the allow-list given to the builder: no Java
+ * serialization. The answer to a {@link Request} comes back on {@code active/Future} and completes
+ * the asker's future. When events to one runtime back up, up to {@link Builder#maxBatch} travel in
+ * one message. A message that fails to decode, names a type not allowed, is oversized or lacks its
+ * properties is logged, counted in {@link TransportStats#rejected()} and dropped.
+ *
+ * <p>Threading: every method may be called from any thread. Sends are asynchronous: an event is
+ * encoded on the caller's thread (so a type not allowed fails there) and handed to the broker by
+ * the transport's sender thread; a refusal at the receiving runtime (stopped object, full buffer)
+ * is counted there, not thrown to the sender.
+ */
+public interface JmsTransport extends Transport {
+
+  /** The paper's topics; each is named {@code <prefix>/<path>} on the broker. */
+  enum Topic {
+    /** Events and requests between entities (the default for every event type). */
+    ENTITY("arm/Entity"),
+    /** Events to structural meta-entities. */
+    SMETA("arm/SMeta"),
+    /** Events to behavioral meta-entities. */
+    BMETA("arm/BMeta"),
+    /** Answers to requests, and to name look-ups. */
+    FUTURE("active/Future"),
+    /** Name look-ups (not a topic of the paper). */
+    NAMES("arm/Names");
+
+    private final String path;
+
+    Topic(String path) {
+      this.path = path;
+    }
+
+    /** The topic's name under the prefix. */
+    public String path() {
+      return path;
+    }
+  }
+
+  /** A builder with the defaults: an embedded broker, prefix {@code armgals}. */
+  static Builder builder() {
+    return new Builder();
+  }
+
+  /** The broker's name for {@code topic}: {@code <prefix>/<path>}. */
+  String topicName(Topic topic);
+
+  /** The URL the transport connected to. */
+  String brokerUrl();
+
+  /**
+   * Registers {@code address} under {@code name} in the name service: {@link #lookup} on any
+   * transport on the same broker (and prefix) finds it while this transport is open.
+   *
+   * @throws IllegalArgumentException {@code name} is blank
+   */
+  void register(String name, Address address);
+
+  /** Removes a registration of this transport. Idempotent. */
+  void unregister(String name);
+
+  /**
+   * The address registered under {@code name}: at once if this transport holds it, otherwise asked
+   * over the broker. The future fails with {@link FutureTimeoutException} at the reply timeout if
+   * no transport answers (an unknown name).
+   */
+  FutureValue<Address> lookup(String name);
+
+  @Override
+  TransportStats stats();
+
+  /** Closes the connection and, if it started one, the embedded broker. Idempotent. */
+  @Override
+  void close();
+
+  /** Settings of a JMS transport; validated by {@link #build()}. Not thread-safe. */
+  final class Builder {
+    @Nullable String url;
+    @Nullable String user;
+    @Nullable String password;
+    int nettyPort;
+    final Map<String, String> options = new LinkedHashMap<>();
+    String prefix = "armgals";
+    final List<Class<?>> allowed = new ArrayList<>();
+    final Map<Class<?>, Topic> topics = new LinkedHashMap<>();
+    boolean jmsEverywhere;
+    int maxBatch = 64;
+    int maxMessageBytes = 1 << 20;
+    Duration replyTimeout = Duration.ofSeconds(30);
+    TimeSource timeSource = TimeSource.system();
+
+    Builder() {}
+
+    /** Starts and owns an in-VM broker (the default). */
+    public Builder embeddedBroker() {
+      this.url = null;
+      this.nettyPort = 0;
+      return this;
+    }
+
+    /**
+     * Starts and owns an embedded broker that other JVMs of this host reach on {@code
+     * tcp://127.0.0.1:<port>}.
+     */
+    public Builder embeddedBroker(int port) {
+      if (port < 1 || port > 65_535) {
+        throw new IllegalArgumentException("port must be in [1, 65535], was " + port);
+      }
+      this.url = null;
+      this.nettyPort = port;
+      return this;
+    }
+
+    /**
+     * Connects to a broker by URL ({@code tcp://host:61616}, {@code vm://0}, {@link
+     * EmbeddedBroker#inVmUrl()}) without credentials.
+     */
+    public Builder broker(String url) {
+      requireNonNull(url, "url");
+      if (!url.matches("(tcp|vm|ssl|(udp)|(jgroups))://.+")) {
+        throw new IllegalArgumentException(
+            "url must look like tcp://host:port or vm://n, was '" + url + "'");
+      }
+      this.url = url;
+      this.user = null;
+      this.password = null;
+      return this;
+    }
+
+    /** Connects to a broker by URL with credentials. */
+    public Builder broker(String url, String user, String password) {
+      broker(url);
+      this.user = requireNonNull(user, "user");
+      this.password = requireNonNull(password, "password");
+      return this;
+    }
+
+    /**
+     * An Artemis connection option added to the URL's query, passed through as is: TLS ({@code
+     * sslEnabled=true}, {@code trustStorePath}, {@code trustStorePassword}, {@code
+     * keyStorePath}...), reconnection ({@code reconnectAttempts}, {@code retryInterval}) and the
+     * rest of Artemis's URL parameters. The transport adds {@code reconnectAttempts=-1} unless
+     * given.
+     */
+    public Builder brokerOption(String key, String value) {
+      requireNonNull(key, "key");
+      requireNonNull(value, "value");
+      if (!key.matches("[A-Za-z][A-Za-z0-9.]*")) {
+        throw new IllegalArgumentException("not an Artemis URL parameter name: '" + key + "'");
+      }
+      options.put(key, value);
+      return this;
+    }
+
+    /** The prefix of the topics, so that applications can share a broker; default armgals. */
+    public Builder prefix(String prefix) {
+      requireNonNull(prefix, "prefix");
+      if (!prefix.matches("[A-Za-z0-9_\\-]+(/[A-Za-z0-9_\\-]+)*")) {
+        throw new IllegalArgumentException(
+            "prefix must be letters, digits, '_' or '-' in '/'-separated parts, was '"
+                + prefix
+                + "'");
+      }
+      this.prefix = prefix;
+      return this;
+    }
+
+    /**
+     * Adds records and enums to the allow-list of the wire codec: events, requests, answers and the
+     * values they hold. Everything else is refused, on both sides.
+     */
+    public Builder allow(Class<?>... types) {
+      for (Class<?> t : types) {
+        allowed.add(requireNonNull(t, "type"));
+      }
+      return this;
+    }
+
+    /** Allows an event type that travels on {@code topic} rather than {@link Topic#ENTITY}. */
+    public Builder allow(Topic topic, Class<? extends Event> type) {
+      requireNonNull(topic, "topic");
+      requireNonNull(type, "type");
+      if (topic == Topic.FUTURE || topic == Topic.NAMES) {
+        throw new IllegalArgumentException(
+            "events travel on ENTITY, SMETA or BMETA, not " + topic + " (" + type.getName() + ")");
+      }
+      allowed.add(type);
+      topics.put(type, topic);
+      return this;
+    }
+
+    /**
+     * "JMS everywhere": events between objects of one runtime go through the broker too, through
+     * references from {@link ActiveRuntime#ref}. The paper's behavior, and the baseline of the
+     * benchmarks. Default false.
+     */
+    public Builder jmsEverywhere(boolean on) {
+      this.jmsEverywhere = on;
+      return this;
+    }
+
+    /** The most events one message carries when events to one runtime back up; 1: no batching. */
+    public Builder maxBatch(int maxBatch) {
+      if (maxBatch < 1 || maxBatch > 4096) {
+        throw new IllegalArgumentException("maxBatch must be in [1, 4096], was " + maxBatch);
+      }
+      this.maxBatch = maxBatch;
+      return this;
+    }
+
+    /** The largest message body accepted; larger inbound ones are rejected. Default 1 MiB. */
+    public Builder maxMessageBytes(int bytes) {
+      if (bytes < 1024 || bytes > 64 << 20) {
+        throw new IllegalArgumentException(
+            "maxMessageBytes must be in [1024, 67108864], was " + bytes);
+      }
+      this.maxMessageBytes = bytes;
+      return this;
+    }
+
+    /**
+     * How long a request or look-up waits for its answer before its future fails with {@link
+     * FutureTimeoutException} (an answer lost with a broker restart ends so). Default 30 s.
+     */
+    public Builder replyTimeout(Duration timeout) {
+      requireNonNull(timeout, "timeout");
+      if (timeout.isNegative() || timeout.isZero()) {
+        throw new IllegalArgumentException("replyTimeout must be > 0, was " + timeout);
+      }
+      this.replyTimeout = timeout;
+      return this;
+    }
+
+    /** Where the reply timeout reads time; default {@link TimeSource#system()}. */
+    public Builder timeSource(TimeSource timeSource) {
+      this.timeSource = requireNonNull(timeSource, "timeSource");
+      return this;
+    }
+
+    /**
+     * A connected transport.
+     *
+     * @throws IllegalArgumentException a type of the allow-list cannot be encoded (the message
+     *     names it)
+     * @throws IllegalStateException the broker could not be started or reached; the cause says why
+     */
+    public JmsTransport build() {
+      return JmsTransportImpl.connect(this);
+    }
+  }
+}

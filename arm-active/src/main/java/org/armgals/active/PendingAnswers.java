@@ -1,0 +1,67 @@
+package org.armgals.active;
+
+import java.time.Duration;
+import java.util.Iterator;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicLong;
+import org.jspecify.annotations.Nullable;
+
+/**
+ * The futures of requests and look-ups sent over a transport, by correlation number, until their
+ * answer comes or their time runs out. Thread-safe.
+ */
+final class PendingAnswers {
+  private record Pending(ValueFuture<Object> future, String target, long deadline) {}
+
+  private final ConcurrentHashMap<Long, Pending> pending = new ConcurrentHashMap<>();
+  private final AtomicLong next = new AtomicLong();
+  private final TimeSource time;
+  private final Duration timeout;
+
+  PendingAnswers(TimeSource time, Duration timeout) {
+    this.time = time;
+    this.timeout = timeout;
+  }
+
+  /** A new pending future for an answer from {@code target}; its correlation number is returned. */
+  long open(ValueFuture<Object> future, String target) {
+    long corr = next.incrementAndGet();
+    pending.put(corr, new Pending(future, target, time.nanoTime() + timeout.toNanos()));
+    return corr;
+  }
+
+  /** The future waiting for {@code corr}, taken out; null if unknown (late or duplicate answer). */
+  @Nullable ValueFuture<Object> take(long corr) {
+    Pending p = pending.remove(corr);
+    return p == null ? null : p.future();
+  }
+
+  /** Fails the futures whose time ran out; returns how many. */
+  int expire() {
+    long now = time.nanoTime();
+    int n = 0;
+    for (Iterator<Map.Entry<Long, Pending>> it = pending.entrySet().iterator(); it.hasNext(); ) {
+      Pending p = it.next().getValue();
+      if (now - p.deadline() >= 0) {
+        it.remove();
+        p.future().abandon(new FutureTimeoutException(p.target(), timeout));
+        n++;
+      }
+    }
+    return n;
+  }
+
+  /** Fails every pending future with {@code cause}. */
+  void abandonAll(ActiveException cause) {
+    for (Iterator<Pending> it = pending.values().iterator(); it.hasNext(); ) {
+      Pending p = it.next();
+      it.remove();
+      p.future().abandon(cause);
+    }
+  }
+
+  int size() {
+    return pending.size();
+  }
+}

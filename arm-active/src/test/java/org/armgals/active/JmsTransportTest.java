@@ -1,0 +1,238 @@
+package org.armgals.active;
+
+import static org.armgals.active.JmsFixture.WAIT;
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.armgals.active.JmsFixture.Echo;
+import org.armgals.active.JmsFixture.Explode;
+import org.armgals.active.JmsFixture.Level;
+import org.armgals.active.JmsFixture.Measure;
+import org.armgals.active.JmsFixture.Ping;
+import org.armgals.active.JmsFixture.Reading;
+import org.armgals.active.JmsFixture.Secret;
+import org.armgals.active.JmsFixture.Sink;
+import org.armgals.active.JmsFixture.Sum;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+/** Two runtimes on one embedded broker (DESIGN.md rules 5 and 7). */
+class JmsTransportTest {
+  static EmbeddedBroker broker;
+
+  @BeforeAll
+  static void startBroker() {
+    broker = EmbeddedBroker.start();
+  }
+
+  @AfterAll
+  static void stopBroker() {
+    broker.close();
+  }
+
+  /** Two runtimes, each with its own transport on the shared broker. */
+  static final class Pair implements AutoCloseable {
+    final JmsTransport ta;
+    final JmsTransport tb;
+    final ActiveRuntime a;
+    final ActiveRuntime b;
+
+    Pair(String prefix) {
+      this(JmsFixture.transport(broker.inVmUrl()).prefix(prefix));
+    }
+
+    Pair(JmsTransport.Builder builder) {
+      ta = builder.build();
+      tb = builder.build();
+      a = JmsFixture.runtime("a", ta);
+      b = JmsFixture.runtime("b", tb);
+    }
+
+    @Override
+    public void close() {
+      a.close();
+      b.close();
+      ta.close();
+      tb.close();
+    }
+  }
+
+  static void awaitCount(ActiveRef<Sink> sink, long n) {
+    sink.callWhen(s -> s.count() >= n, s -> true).getValue(WAIT);
+  }
+
+  @Test
+  void eventsToAnotherRuntimeArriveInSendOrder() {
+    try (Pair p = new Pair("order")) {
+      ActiveObject<Sink> sink = p.b.spawn(new Sink());
+      ActiveRef<Sink> remote = p.a.ref(sink.address());
+      for (int i = 0; i < 2_000; i++) {
+        remote.send(new Ping(null, sink.address(), i));
+      }
+      awaitCount(sink, 2_000);
+      List<Long> ns = new ArrayList<>();
+      sink.call(s -> s.events).getValue(WAIT).forEach(e -> ns.add(((Ping) e).n()));
+      assertThat(ns).hasSize(2_000).isSorted();
+      assertThat(p.a.stats().transport().sent()).isEqualTo(2_000);
+      assertThat(p.b.stats().transport().received()).isEqualTo(2_000);
+    }
+  }
+
+  @Test
+  void nestedRecordsListsMapsEnumsAndBytesCrossIntact() {
+    try (Pair p = new Pair("values")) {
+      ActiveObject<Sink> sink = p.b.spawn(new Sink());
+      Measure m =
+          new Measure(
+              null,
+              sink.address(),
+              new Reading("lidar", 2.5, Level.HIGH, List.of(1, 2, 3)),
+              Map.of("x", 1L, "y", -2L),
+              new byte[] {1, 2, 3});
+      p.a.ref(sink.address()).send(m);
+      awaitCount(sink, 1);
+      Measure got = (Measure) sink.call(s -> s.events.get(0)).getValue(WAIT);
+      assertThat(got.reading()).isEqualTo(m.reading());
+      assertThat(got.counts()).isEqualTo(m.counts());
+      assertThat(got.raw()).containsExactly(1, 2, 3);
+      assertThat(got).isNotSameAs(m);
+    }
+  }
+
+  @Test
+  void theSameAskWorksLocallyAndAcrossRuntimes() {
+    try (Pair p = new Pair("ask")) {
+      ActiveObject<Sink> sink = p.b.spawn(new Sink());
+      FutureValue<Integer> local =
+          p.b.<Sink>ref(sink.address()).ask(new Sum(null, sink.address(), 2, 3));
+      FutureValue<Integer> remote =
+          p.a.<Sink>ref(sink.address()).ask(new Sum(null, sink.address(), 2, 3));
+      assertThat(local.getValue(WAIT)).isEqualTo(5);
+      assertThat(remote.getValue(WAIT)).isEqualTo(5);
+      Reading r = new Reading("sonar", 0.25, Level.LOW, List.of());
+      assertThat(
+              p.a.<Sink>ref(sink.address()).ask(new Echo(null, sink.address(), r)).getValue(WAIT))
+          .isEqualTo(r);
+      assertThat(p.b.stats().transport().sent()).isZero();
+    }
+  }
+
+  @Test
+  void aFailureInTheRemoteServantFailsTheFutureWithItsCause() {
+    try (Pair p = new Pair("fail")) {
+      ActiveObject<Sink> sink = p.b.spawn(new Sink());
+      FutureValue<String> f =
+          p.a.<Sink>ref(sink.address()).ask(new Explode(null, sink.address(), "boom"));
+      assertThatThrownBy(() -> f.getValue(WAIT))
+          .isInstanceOf(RequestFailedException.class)
+          .hasRootCauseMessage("failed remotely: java.lang.IllegalStateException: boom");
+    }
+  }
+
+  @Test
+  void eventsInsideOneRuntimeNeverTouchTheBroker() {
+    try (Pair p = new Pair("local")) {
+      ActiveObject<Sink> sink = p.a.spawn(new Sink());
+      ActiveRef<Sink> ref = p.a.ref(sink.address());
+      assertThat(ref).isSameAs(sink);
+      for (int i = 0; i < 100; i++) {
+        ref.send(new Secret(null, sink.address(), "never serialized " + i));
+      }
+      awaitCount(sink, 100);
+      assertThat(p.ta.stats()).isEqualTo(TransportStats.NONE);
+    }
+  }
+
+  @Test
+  void jmsEverywhereRoutesLocalEventsThroughTheBroker() {
+    try (Pair p =
+        new Pair(JmsFixture.transport(broker.inVmUrl()).prefix("everywhere").jmsEverywhere(true))) {
+      ActiveObject<Sink> sink = p.a.spawn(new Sink());
+      ActiveRef<Sink> ref = p.a.ref(sink.address());
+      for (int i = 0; i < 100; i++) {
+        ref.send(new Ping(null, sink.address(), i));
+      }
+      awaitCount(sink, 100);
+      assertThat(ref.ask(new Sum(null, sink.address(), 1, 1)).getValue(WAIT)).isEqualTo(2);
+      assertThat(p.ta.stats().sent()).isEqualTo(100);
+      assertThat(p.ta.stats().received()).isEqualTo(102); // 100 events, the request, its answer
+      // code still runs on the local object
+      assertThat(ref.call(s -> s.count()).getValue(WAIT)).isEqualTo(100);
+    }
+  }
+
+  @Test
+  void aNameRegisteredInOneRuntimeIsFoundFromAnother() {
+    try (Pair p = new Pair("names")) {
+      ActiveObject<Sink> sink = p.b.spawn(new Sink());
+      p.tb.register("sink", sink.address());
+      assertThat(p.tb.lookup("sink").getValue(WAIT)).isEqualTo(sink.address());
+      Address found = p.ta.lookup("sink").getValue(WAIT);
+      assertThat(found).isEqualTo(sink.address());
+      assertThat(p.a.<Sink>ref(found).ask(new Sum(null, found, 20, 22)).getValue(WAIT))
+          .isEqualTo(42);
+    }
+  }
+
+  @Test
+  void anUnknownNameFailsAtTheReplyTimeout() {
+    try (Pair p =
+        new Pair(
+            JmsFixture.transport(broker.inVmUrl())
+                .prefix("nonames")
+                .replyTimeout(Duration.ofMillis(200)))) {
+      assertThatThrownBy(() -> p.ta.lookup("nobody").getValue(WAIT))
+          .isInstanceOf(FutureTimeoutException.class)
+          .hasMessageContaining("nobody");
+    }
+  }
+
+  @Test
+  void eventsThatBackUpTravelSeveralPerMessage() {
+    try (Pair p = new Pair("batch")) {
+      ActiveObject<Sink> sink = p.b.spawn(new Sink());
+      ActiveRef<Sink> remote = p.a.ref(sink.address());
+      int n = 20_000;
+      for (int i = 0; i < n; i++) {
+        remote.send(new Ping(null, sink.address(), i));
+      }
+      awaitCount(sink, n);
+      TransportStats s = p.ta.stats();
+      assertThat(s.sent()).isEqualTo(n);
+      assertThat(s.batches()).isPositive();
+      assertThat(p.tb.stats().received()).isEqualTo(n);
+      List<Event> events = sink.call(x -> x.events).getValue(WAIT);
+      for (int i = 0; i < n; i++) {
+        assertThat(((Ping) events.get(i)).n()).isEqualTo(i);
+      }
+    }
+  }
+
+  @Test
+  void aTypeNotAllowedIsRefusedAtTheSender() {
+    try (Pair p = new Pair("refused")) {
+      ActiveObject<Sink> sink = p.b.spawn(new Sink());
+      ActiveRef<Sink> remote = p.a.ref(sink.address());
+      assertThatThrownBy(() -> remote.send(new Secret(null, sink.address(), "x")))
+          .isInstanceOf(IllegalArgumentException.class)
+          .hasMessageContaining(Secret.class.getName())
+          .hasMessageContaining("allow-list");
+    }
+  }
+
+  @Test
+  void codeCannotCrossButSaysWhatCan() {
+    try (Pair p = new Pair("code")) {
+      ActiveObject<Sink> sink = p.b.spawn(new Sink());
+      ActiveRef<Sink> remote = p.a.ref(sink.address());
+      assertThatThrownBy(() -> remote.call(s -> s.count()))
+          .isInstanceOf(UnsupportedOperationException.class)
+          .hasMessageContaining("ask(Request)");
+    }
+  }
+}
