@@ -12,7 +12,8 @@
 # Builds benchmarks/target/benchmarks.jar with the Maven wrapper, then runs, in one JVM over one
 # embedded Artemis broker (persistence off, an in-VM acceptor and a netty acceptor on 127.0.0.1),
 # rounds of every workload on each transport (invm, netty) with each implementation (raw Jakarta
-# JMS; armgals once the JMS transport exists), interleaved so that all see much the same load.
+# JMS; armgals: two runtimes, each with its own JmsTransport), interleaved so that all see much
+# the same load.
 # Uses a JDK >= 21 (JAVA_HOME if it is one, else the newest under /usr/lib/jvm) with the options
 # in BROKER_JAVA_OPTS, default "-Xms1g -Xmx1g". Prints one line per run (docs/benchmarks-broker.md):
 #   broker name=events impl=<raw|armgals> transport=<invm|netty> ops_per_s=<x>
@@ -32,7 +33,7 @@ while (($#)); do
       args+=("$1" "${2:?$1 needs a count}")
       shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "broker.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) args+=("$1"); shift ;;
   esac

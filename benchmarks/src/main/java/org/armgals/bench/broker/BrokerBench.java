@@ -70,7 +70,12 @@ public final class BrokerBench {
     TimeSource time = TimeSource.system();
     try (BenchBroker broker = BenchBroker.start(freePort())) {
       BrokerBench bench =
-          new BrokerBench(List.of(new RawJms(time)), broker, System.out, messages, requests);
+          new BrokerBench(
+              List.of(new RawJms(time), new ArmgalsJms(time)),
+              broker,
+              System.out,
+              messages,
+              requests);
       for (int round = 0; round < warmup + runs; round++) {
         bench.round(names, round < warmup ? "warmup " : "");
       }
