@@ -33,7 +33,7 @@ while (($#)); do
       args+=("$1" "${2:?$1 needs a count}")
       shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "broker.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) args+=("$1"); shift ;;
   esac
