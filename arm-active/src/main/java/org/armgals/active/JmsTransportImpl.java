@@ -480,7 +480,11 @@ final class JmsTransportImpl implements JmsTransport {
       throw new WireFormatException(
           "expected an event, got " + (v == null ? "null" : v.getClass().getName()));
     }
-    if (!e.destination().runtime().equals(runtime)) {
+    Address to = e.destination();
+    if (to == null) {
+      throw new WireFormatException("event " + e + " has no destination");
+    }
+    if (!to.runtime().equals(runtime)) {
       throw new WireFormatException(
           "event "
               + e

@@ -18,6 +18,7 @@ import org.armgals.active.BufferFullException;
 import org.armgals.active.Callable;
 import org.armgals.active.Clock;
 import org.armgals.active.ClockStats;
+import org.armgals.active.EmbeddedBroker;
 import org.armgals.active.Event;
 import org.armgals.active.EventProcessor;
 import org.armgals.active.Filter;
@@ -28,6 +29,7 @@ import org.armgals.active.FutureNotAvailableException;
 import org.armgals.active.FutureTimeoutException;
 import org.armgals.active.FutureValue;
 import org.armgals.active.Guard;
+import org.armgals.active.JmsTransport;
 import org.armgals.active.ManualClock;
 import org.armgals.active.MethodRequest;
 import org.armgals.active.Mode;
@@ -36,8 +38,10 @@ import org.armgals.active.ObjectStoppedException;
 import org.armgals.active.OverflowPolicy;
 import org.armgals.active.ReactiveCycle;
 import org.armgals.active.RealTimeClock;
+import org.armgals.active.Request;
 import org.armgals.active.RequestFailedException;
 import org.armgals.active.RuntimeStats;
+import org.armgals.active.Selectable;
 import org.armgals.active.ServantAction;
 import org.armgals.active.ServantFunction;
 import org.armgals.active.ShutdownMode;
@@ -45,6 +49,7 @@ import org.armgals.active.SynchronizedMethodRequest;
 import org.armgals.active.SynchronousFuture;
 import org.armgals.active.SynchronousFutureValue;
 import org.armgals.active.TimeSource;
+import org.armgals.active.TransportStats;
 import org.armgals.active.WaitCycleException;
 import org.armgals.active.spi.ErrorHandler;
 import org.armgals.active.spi.ObjectListener;
@@ -89,6 +94,7 @@ class ModuleBoundariesTest {
           Event.class,
           EventProcessor.class,
           Future.class,
+          EmbeddedBroker.class,
           Filter.class,
           FutureEvent.class,
           FutureInterruptedException.class,
@@ -96,6 +102,9 @@ class ModuleBoundariesTest {
           FutureTimeoutException.class,
           FutureValue.class,
           Guard.class,
+          JmsTransport.class,
+          JmsTransport.Builder.class,
+          JmsTransport.Topic.class,
           ManualClock.class,
           MethodRequest.class,
           Mode.class,
@@ -108,8 +117,10 @@ class ModuleBoundariesTest {
           OverflowPolicy.DropOldest.class,
           ReactiveCycle.class,
           RealTimeClock.class,
+          Request.class,
           RequestFailedException.class,
           RuntimeStats.class,
+          Selectable.class,
           ServantAction.class,
           ServantFunction.class,
           ShutdownMode.class,
@@ -117,6 +128,7 @@ class ModuleBoundariesTest {
           SynchronousFuture.class,
           SynchronousFutureValue.class,
           TimeSource.class,
+          TransportStats.class,
           WaitCycleException.class,
           ErrorHandler.class,
           ObjectListener.class,
