@@ -149,6 +149,11 @@ final class ChildProcess implements AutoCloseable {
     }
   }
 
+  /** Closes the process's standard input: it reads end of file. */
+  void closeInput() throws IOException {
+    process.getOutputStream().close();
+  }
+
   boolean isAlive() {
     return process.isAlive();
   }

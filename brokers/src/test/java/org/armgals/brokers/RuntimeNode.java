@@ -3,7 +3,9 @@ package org.armgals.brokers;
 import java.io.BufferedReader;
 import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.time.Duration;
+import java.util.List;
 import org.armgals.active.ActiveObject;
 import org.armgals.active.ActiveRef;
 import org.armgals.active.ActiveRuntime;
@@ -12,17 +14,21 @@ import org.armgals.active.Event;
 import org.armgals.active.EventProcessor;
 import org.armgals.active.JmsTransport;
 import org.armgals.active.Request;
+import org.armgals.active.TimeSource;
+import org.armgals.presence.Presence;
 import org.jspecify.annotations.Nullable;
 
 /**
  * A runtime JVM of the multi-JVM tests, started by them as a child process on the test class path.
  * It connects to the broker named by the environment ({@code ARMGALS_BROKER_URL}, {@code
  * ARMGALS_BROKER_USER}, {@code ARMGALS_BROKER_PASSWORD}, {@code ARMGALS_PREFIX}: credentials stay
- * out of the command line) and plays one role:
+ * out of the command line), beats on the broker ({@link Presence}, as runtime {@code <role>-<pid>})
+ * and plays one role:
  *
  * <ul>
  *   <li>{@code serve}: spawns a {@link Counter}, registers it as {@code counter}, prints {@code
- *       ready <address>}, and runs until its standard input ends;
+ *       ready runtime=<name> at=<address>}, and runs until its standard input ends (then says it
+ *       leaves);
  *   <li>{@code ask <n>}: looks {@code counter} up, sends it {@code n} {@link Ping}s, asks it for
  *       its {@link Count} and a {@link Sum}, prints {@code result count=<c> sum=<s> at=<address>}
  *       and exits.
@@ -30,6 +36,9 @@ import org.jspecify.annotations.Nullable;
  */
 public final class RuntimeNode {
   static final Duration WAIT = Duration.ofSeconds(30);
+
+  /** How often a node beats; four missed beats make it lost. */
+  static final Duration PRESENCE_PERIOD = Duration.ofMillis(200);
 
   private RuntimeNode() {}
 
@@ -67,6 +76,29 @@ public final class RuntimeNode {
     }
   }
 
+  /**
+   * Starts a runtime JVM playing {@code args} against {@code broker}, under {@code prefix}, on the
+   * test class path and the tests' JDK; its output goes to {@code <name>.log} beside the broker.
+   */
+  static ChildProcess launch(
+      StandaloneBroker broker, String name, String prefix, List<String> args) {
+    ProcessBuilder command =
+        new ProcessBuilder(
+            Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+            "-Xmx256m",
+            "-XX:TieredStopAtLevel=1",
+            "-cp",
+            System.getProperty("java.class.path"),
+            RuntimeNode.class.getName());
+    command.command().addAll(args);
+    command.environment().put("ARMGALS_BROKER_URL", broker.url());
+    command.environment().put("ARMGALS_BROKER_USER", broker.spec().user().user());
+    command.environment().put("ARMGALS_BROKER_PASSWORD", broker.spec().user().password());
+    command.environment().put("ARMGALS_PREFIX", prefix);
+    return ChildProcess.start(
+        name, command, broker.instance().getParent().resolve(name + ".log"), TimeSource.system());
+  }
+
   static JmsTransport.Builder transport(String url, String user, String password, String prefix) {
     return JmsTransport.builder().broker(url, user, password).prefix(prefix).allow(ALLOWED);
   }
@@ -78,14 +110,25 @@ public final class RuntimeNode {
   /** Entry point; see the class comment. */
   public static void main(String[] args) throws Exception {
     String role = args.length > 0 ? args[0] : "";
-    try (JmsTransport transport =
+    String name = role + "-" + ProcessHandle.current().pid();
+    try (Presence presence =
+            Presence.builder()
+                .broker(
+                    env("ARMGALS_BROKER_URL"),
+                    env("ARMGALS_BROKER_USER"),
+                    env("ARMGALS_BROKER_PASSWORD"))
+                .prefix(env("ARMGALS_PREFIX"))
+                .runtime(name)
+                .period(PRESENCE_PERIOD)
+                .build();
+        JmsTransport transport =
             transport(
                     env("ARMGALS_BROKER_URL"),
                     env("ARMGALS_BROKER_USER"),
                     env("ARMGALS_BROKER_PASSWORD"),
                     env("ARMGALS_PREFIX"))
                 .build();
-        ActiveRuntime runtime = runtime(role + "-" + ProcessHandle.current().pid(), transport)) {
+        ActiveRuntime runtime = runtime(presence.runtime(), transport)) {
       switch (role) {
         case "serve" -> serve(transport, runtime);
         case "ask" -> ask(transport, runtime, Integer.parseInt(args[1]));
@@ -99,7 +142,7 @@ public final class RuntimeNode {
   private static void serve(JmsTransport transport, ActiveRuntime runtime) throws Exception {
     ActiveObject<Counter> counter = runtime.spawn(new Counter());
     transport.register("counter", counter.address());
-    System.out.println("ready " + counter.address());
+    System.out.println("ready runtime=" + runtime.name() + " at=" + counter.address());
     System.out.flush();
     BufferedReader in =
         new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
