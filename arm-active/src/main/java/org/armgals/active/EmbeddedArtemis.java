@@ -9,6 +9,7 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.Stream;
 import org.apache.activemq.artemis.core.config.impl.ConfigurationImpl;
+import org.apache.activemq.artemis.core.remoting.impl.invm.InVMConnector;
 import org.apache.activemq.artemis.core.server.embedded.EmbeddedActiveMQ;
 import org.jspecify.annotations.Nullable;
 import org.slf4j.Logger;
@@ -18,6 +19,9 @@ import org.slf4j.LoggerFactory;
 final class EmbeddedArtemis implements EmbeddedBroker {
   private static final Logger LOG = LoggerFactory.getLogger(EmbeddedArtemis.class);
   private static final AtomicInteger IDS = new AtomicInteger(ProcessHandle.current().hashCode());
+
+  /** Embedded brokers started and not yet stopped in this JVM. */
+  private static final AtomicInteger LIVE = new AtomicInteger();
 
   private final EmbeddedActiveMQ server;
   private final String inVmUrl;
@@ -77,6 +81,7 @@ final class EmbeddedArtemis implements EmbeddedBroker {
               + ")",
           e);
     }
+    LIVE.incrementAndGet();
     LOG.info("embedded Artemis broker started on {}{}", inVm, netty != null ? " and " + netty : "");
     return new EmbeddedArtemis(server, inVm, netty, dir);
   }
@@ -96,6 +101,11 @@ final class EmbeddedArtemis implements EmbeddedBroker {
     if (closed.compareAndSet(false, true)) {
       stopQuietly(server);
       delete(dir);
+      if (LIVE.decrementAndGet() == 0) {
+        // In-VM connections share one static pool of non-daemon threads; with no embedded broker
+        // left there is no in-VM connection either, and the pool would keep the JVM alive.
+        InVMConnector.resetThreadPool();
+      }
       LOG.info("embedded Artemis broker {} stopped", inVmUrl);
     }
   }

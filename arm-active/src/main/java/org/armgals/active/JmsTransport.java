@@ -83,6 +83,26 @@ public interface JmsTransport extends Transport {
    */
   FutureValue<Address> lookup(String name);
 
+  /**
+   * Publishes {@code event} on {@code topic} to every {@link Subscription} whose filter takes it:
+   * those of this transport in memory (no encoding; the filter is evaluated on the event's
+   * properties), those of other transports through the broker (the filter is the subscription's JMS
+   * selector there). The event's type must be on the allow-list.
+   *
+   * @throws IllegalArgumentException {@code topic} is FUTURE or NAMES, or the type is not allowed
+   */
+  void publish(Topic topic, Event event);
+
+  /**
+   * Subscribes {@code handler} to the events published on {@code topic} that {@code filter} takes
+   * (its properties: {@code kind}, {@code sender}, {@code destination}, {@code seq} and those of a
+   * {@link Selectable} event).
+   *
+   * @throws IllegalArgumentException {@code topic} is FUTURE or NAMES
+   */
+  Subscription subscribe(
+      Topic topic, Filter filter, java.util.function.Consumer<? super Event> handler);
+
   @Override
   TransportStats stats();
 

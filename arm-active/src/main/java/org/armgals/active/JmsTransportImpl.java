@@ -15,6 +15,7 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
@@ -55,6 +56,8 @@ final class JmsTransportImpl implements JmsTransport {
   private final Session answerSession;
   private final Map<String, Session> runtimes = new ConcurrentHashMap<>();
   private final Map<String, Address> names = new ConcurrentHashMap<>();
+  private final Set<JmsSubscription> subscriptions = ConcurrentHashMap.newKeySet();
+  private final AtomicLong subscriptionIds = new AtomicLong();
   private final PendingAnswers pending;
   private final BlockingQueue<Outbound> outbound = new ArrayBlockingQueue<>(QUEUE);
   private final Thread sender;
@@ -217,6 +220,93 @@ final class JmsTransportImpl implements JmsTransport {
   @Override
   public TransportStats stats() {
     return new TransportStats(sent.sum(), received.sum(), batches.sum(), rejected.sum());
+  }
+
+  // ------------------------------------------------------------------ publish and subscribe
+
+  private static void checkPublishable(Topic topic) {
+    requireNonNull(topic, "topic");
+    if (topic == Topic.FUTURE || topic == Topic.NAMES) {
+      throw new IllegalArgumentException(
+          "events are published on ENTITY, SMETA or BMETA, not " + topic);
+    }
+  }
+
+  @Override
+  public void publish(Topic topic, Event event) {
+    checkPublishable(topic);
+    requireNonNull(event, "event");
+    Map<String, Object> props = selectorProperties(event);
+    byte[] value = encode(event);
+    for (JmsSubscription s : subscriptions) {
+      if (s.topic() == topic) {
+        s.local(event, props);
+      }
+    }
+    Map<String, Object> wire = new HashMap<>(props);
+    wire.put(WireProperties.MSG, WireProperties.MSG_PUBLISH);
+    wire.put(WireProperties.FROM, node);
+    enqueue(new Outbound(topic, null, value, wire));
+  }
+
+  @Override
+  public Subscription subscribe(
+      Topic topic, Filter filter, java.util.function.Consumer<? super Event> handler) {
+    checkPublishable(topic);
+    requireNonNull(filter, "filter");
+    requireNonNull(handler, "handler");
+    checkOpen();
+    try {
+      JmsSubscription s =
+          new JmsSubscription(
+              this, topic, node + "/" + subscriptionIds.incrementAndGet(), filter, handler);
+      subscriptions.add(s);
+      return s;
+    } catch (JMSException e) {
+      throw new IllegalStateException("cannot subscribe to " + topicName(topic) + " on " + url, e);
+    }
+  }
+
+  String node() {
+    return node;
+  }
+
+  Connection connection() {
+    return connection;
+  }
+
+  void forget(JmsSubscription s) {
+    subscriptions.remove(s);
+  }
+
+  void publishMarker(Topic topic, String subscription) {
+    Map<String, Object> props = new HashMap<>();
+    props.put(WireProperties.MARKER, subscription);
+    enqueue(new Outbound(topic, null, codec.encodeValue(null), props));
+  }
+
+  /** A published event from the broker; null (counted, logged) if it is not a good one. */
+  @Nullable Event decodePublished(Message m) {
+    try {
+      if (!(m.getObjectProperty(WireProperties.FROM) instanceof String)
+          || !(m.getObjectProperty(WireProperties.SEQ) instanceof Long)) {
+        throw new WireFormatException(
+            "a published event needs " + WireProperties.FROM + " and " + WireProperties.SEQ);
+      }
+      List<@Nullable Object> values = decode(m);
+      if (values.size() != 1 || !(values.get(0) instanceof Event e)) {
+        throw new WireFormatException("a published message must hold one event: " + values);
+      }
+      received.increment();
+      return e;
+    } catch (WireFormatException | JMSException | RuntimeException e) {
+      reject(m, e);
+      return null;
+    }
+  }
+
+  void rejectPublished(Exception e) {
+    reject(null, e);
   }
 
   // ------------------------------------------------------------------ names
@@ -405,9 +495,14 @@ final class JmsTransportImpl implements JmsTransport {
           m.setIntProperty(WireProperties.COUNT, group.size());
           batches.increment();
         }
-        producer.send(destinations.get(first.topic()), m);
-        if (first.batchKey() != null) {
-          sent.add(group.size());
+        // Counted before the send: the answer to a request may come back before send returns.
+        int counted = counted(first) ? group.size() : 0;
+        sent.add(counted);
+        try {
+          producer.send(destinations.get(first.topic()), m);
+        } catch (JMSException | RuntimeException e) {
+          sent.add(-counted);
+          throw e;
         }
       } catch (JMSException | RuntimeException e) {
         LOG.error(
@@ -418,6 +513,12 @@ final class JmsTransportImpl implements JmsTransport {
             e.toString());
       }
     }
+  }
+
+  /** Whether a message counts as sent: events, requests and answers; not markers or look-ups. */
+  private static boolean counted(Outbound o) {
+    Object kind = o.properties().get(WireProperties.MSG);
+    return kind != null && !WireProperties.MSG_LOOKUP.equals(kind);
   }
 
   // ------------------------------------------------------------------ receiving
@@ -611,7 +712,7 @@ final class JmsTransportImpl implements JmsTransport {
   }
 
   /** Counts and logs a dead letter: every one up to a few, then one in a thousand. */
-  private void reject(Message m, Exception why) {
+  private void reject(@Nullable Message m, Exception why) {
     rejected.increment();
     long n = rejected.sum();
     if (n <= LOGGED_REJECTIONS || n % 1_000 == 0) {
@@ -637,6 +738,9 @@ final class JmsTransportImpl implements JmsTransport {
       Thread.currentThread().interrupt();
     }
     sweeper.shutdownNow();
+    for (JmsSubscription s : List.copyOf(subscriptions)) {
+      s.close();
+    }
     pending.abandonAll(new ActiveException("JMS transport " + node + " closed before the answer"));
     try {
       connection.close();

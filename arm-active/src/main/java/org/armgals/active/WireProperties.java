@@ -31,6 +31,13 @@ final class WireProperties {
   /** Why a request failed, in a failure answer. */
   static final String ERROR = "arm_error";
 
+  /** The node that published an event. */
+  static final String FROM = "arm_from";
+
+  /** A subscription's swap marker: the subscription's id. */
+  static final String MARKER = "arm_marker";
+
+  static final String MSG_PUBLISH = "publish";
   static final String MSG_EVENT = "event";
   static final String MSG_BATCH = "batch";
   static final String MSG_REQUEST = "request";

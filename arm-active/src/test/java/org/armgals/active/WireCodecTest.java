@@ -163,7 +163,7 @@ class WireCodecTest {
   }
 
   @Test
-  void aHundredThousandGeneratedBodiesNeverCrashAndNeverBuildAnUnlistedType() {
+  void generatedBodiesNeverCrashAndNeverBuildAnUnlistedType() {
     SplittableRandom random = new SplittableRandom(20261122);
     byte[] valid =
         body(
@@ -181,7 +181,7 @@ class WireCodecTest {
             CODEC.encodeValue("t"));
     int decoded = 0;
     int rejected = 0;
-    for (int i = 0; i < 100_000; i++) {
+    for (int i = 0; i < 30_000; i++) {
       byte[] b = generated(random, i % 3 == 0 ? valid : trap);
       try {
         for (Object v : CODEC.decode(b)) {
@@ -192,8 +192,8 @@ class WireCodecTest {
         rejected++;
       }
     }
-    assertThat(decoded + rejected).isEqualTo(100_000);
-    assertThat(rejected).isGreaterThan(50_000);
+    assertThat(decoded + rejected).isEqualTo(30_000);
+    assertThat(rejected).isGreaterThan(15_000);
     assertThat(TRAPS_MADE).hasValue(0);
   }
 

@@ -45,6 +45,7 @@ import org.armgals.active.Selectable;
 import org.armgals.active.ServantAction;
 import org.armgals.active.ServantFunction;
 import org.armgals.active.ShutdownMode;
+import org.armgals.active.Subscription;
 import org.armgals.active.SynchronizedMethodRequest;
 import org.armgals.active.SynchronousFuture;
 import org.armgals.active.SynchronousFutureValue;
@@ -124,6 +125,7 @@ class ModuleBoundariesTest {
           ServantAction.class,
           ServantFunction.class,
           ShutdownMode.class,
+          Subscription.class,
           SynchronizedMethodRequest.class,
           SynchronousFuture.class,
           SynchronousFutureValue.class,
