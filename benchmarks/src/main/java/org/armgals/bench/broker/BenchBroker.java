@@ -1,45 +1,35 @@
 package org.armgals.bench.broker;
 
 import jakarta.jms.ConnectionFactory;
-import java.io.IOException;
-import org.apache.activemq.artemis.core.config.impl.ConfigurationImpl;
-import org.apache.activemq.artemis.core.server.embedded.EmbeddedActiveMQ;
 import org.apache.activemq.artemis.jms.client.ActiveMQConnectionFactory;
+import org.armgals.active.EmbeddedBroker;
 
 /**
- * The one broker every implementation of the benchmark runs over: an embedded Artemis with
- * persistence off, an in-VM acceptor and a netty acceptor bound to 127.0.0.1.
- *
- * <p>Security is off: the broker lives as long as the benchmark's JVM and listens on loopback only.
- * A broker reached beyond loopback must require credentials (docs/deployment-cluster.md).
+ * The one broker every implementation of the benchmark runs over: the runtime's own {@link
+ * EmbeddedBroker} (persistence off, security off, an in-VM acceptor) with a netty acceptor bound to
+ * 127.0.0.1, so that the raw baseline and armgals meet the very same broker.
  */
 final class BenchBroker implements AutoCloseable {
-  private final EmbeddedActiveMQ server;
-  private final int nettyPort;
+  private final EmbeddedBroker broker;
+  private final String nettyUrl;
 
-  private BenchBroker(EmbeddedActiveMQ server, int nettyPort) {
-    this.server = server;
-    this.nettyPort = nettyPort;
+  private BenchBroker(EmbeddedBroker broker) {
+    this.broker = broker;
+    this.nettyUrl =
+        broker
+            .nettyUrl()
+            .orElseThrow(() -> new IllegalStateException("the broker has no netty acceptor"));
   }
 
-  static BenchBroker start(int nettyPort) throws Exception {
-    ConfigurationImpl config = new ConfigurationImpl();
-    config.setPersistenceEnabled(false);
-    config.setSecurityEnabled(false);
-    config.setJMXManagementEnabled(false);
-    config.addAcceptorConfiguration("invm", "vm://0");
-    config.addAcceptorConfiguration("netty", "tcp://127.0.0.1:" + nettyPort);
-    EmbeddedActiveMQ server = new EmbeddedActiveMQ();
-    server.setConfiguration(config);
-    server.start();
-    return new BenchBroker(server, nettyPort);
+  static BenchBroker start(int nettyPort) {
+    return new BenchBroker(EmbeddedBroker.start(nettyPort));
   }
 
   /** The URL a client of {@code transport} connects to. */
   String url(Transport transport) {
     return switch (transport) {
-      case INVM -> "vm://0";
-      case NETTY -> "tcp://127.0.0.1:" + nettyPort;
+      case INVM -> broker.inVmUrl();
+      case NETTY -> nettyUrl;
     };
   }
 
@@ -48,13 +38,7 @@ final class BenchBroker implements AutoCloseable {
   }
 
   @Override
-  public void close() throws IOException {
-    try {
-      server.stop();
-    } catch (IOException | RuntimeException e) {
-      throw e;
-    } catch (Exception e) {
-      throw new IOException("stopping the embedded broker failed", e);
-    }
+  public void close() {
+    broker.close();
   }
 }
