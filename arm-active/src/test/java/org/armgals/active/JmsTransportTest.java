@@ -217,6 +217,29 @@ class JmsTransportTest {
   }
 
   @Test
+  void transportFiguresAreInTheRuntimesMBean() throws Exception {
+    try (JmsTransport ta = JmsFixture.transport(broker.inVmUrl()).prefix("mbean").build();
+        JmsTransport tb = JmsFixture.transport(broker.inVmUrl()).prefix("mbean").build();
+        ActiveRuntime a = ActiveRuntime.builder().name("mbean-a").transport(ta).build();
+        ActiveRuntime b = JmsFixture.runtime("mbean-b", tb)) {
+      ActiveObject<Sink> sink = b.spawn(new Sink());
+      for (int i = 0; i < 10; i++) {
+        a.ref(sink.address()).send(new Ping(null, sink.address(), i));
+      }
+      awaitCount(sink, 10);
+      javax.management.ObjectName name =
+          new javax.management.ObjectName(
+              "org.armgals:type=ActiveRuntime,name="
+                  + javax.management.ObjectName.quote("mbean-a"));
+      javax.management.MBeanServer server =
+          java.lang.management.ManagementFactory.getPlatformMBeanServer();
+      assertThat(server.getAttribute(name, "TransportSent")).isEqualTo(10L);
+      assertThat(server.getAttribute(name, "TransportRejected")).isEqualTo(0L);
+      assertThat(a.stats().transport()).isEqualTo(ta.stats());
+    }
+  }
+
+  @Test
   void aTypeNotAllowedIsRefusedAtTheSender() {
     try (Pair p = new Pair("refused")) {
       ActiveObject<Sink> sink = p.b.spawn(new Sink());

@@ -12,8 +12,8 @@ import org.jspecify.annotations.Nullable;
  * between objects of one runtime are handed over in memory, never serialized); it uses it for every
  * event whose destination names another runtime.
  *
- * <p>{@link Transport#inJvm()} links runtimes of one JVM. A transport for runtimes in other JVMs
- * (JMS over Apache ActiveMQ Artemis, DESIGN.md rule 5) is meant to implement this interface.
+ * <p>{@link Transport#inJvm()} links runtimes of one JVM; {@link org.armgals.active.JmsTransport}
+ * links runtimes of any JVMs through an Apache ActiveMQ Artemis broker (DESIGN.md rule 5).
  *
  * <p>Threading: {@link #send} is called concurrently by any thread; {@link #attach} and {@link
  * #detach} by the runtime when it starts and stops.
