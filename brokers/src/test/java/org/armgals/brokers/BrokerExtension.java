@@ -4,6 +4,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import org.armgals.active.TimeSource;
 import org.armgals.brokers.BrokerSpec.ClusterSpec;
 import org.armgals.brokers.BrokerSpec.Credentials;
 import org.junit.jupiter.api.extension.AfterAllCallback;
@@ -25,17 +26,24 @@ final class BrokerExtension implements BeforeAllCallback, AfterAllCallback {
   private final String name;
   private final int size;
   private final boolean clustered;
+  private final boolean tls;
   private final List<StandaloneBroker> brokers = new ArrayList<>();
 
-  private BrokerExtension(String name, int size, boolean clustered) {
+  private BrokerExtension(String name, int size, boolean clustered, boolean tls) {
     this.name = name;
     this.size = size;
     this.clustered = clustered;
+    this.tls = tls;
   }
 
   /** One standalone broker named {@code name}. */
   static BrokerExtension standalone(String name) {
-    return new BrokerExtension(name, 1, false);
+    return new BrokerExtension(name, 1, false, false);
+  }
+
+  /** One standalone broker whose acceptor takes TLS only, with a key made for the test class. */
+  static BrokerExtension standaloneWithTls(String name) {
+    return new BrokerExtension(name, 1, false, true);
   }
 
   /** A symmetric cluster of {@code size} brokers named {@code name-1}, {@code name-2}, .... */
@@ -43,7 +51,7 @@ final class BrokerExtension implements BeforeAllCallback, AfterAllCallback {
     if (size < 2) {
       throw new IllegalArgumentException("a cluster needs at least 2 brokers, was " + size);
     }
-    return new BrokerExtension(name, size, true);
+    return new BrokerExtension(name, size, true, false);
   }
 
   /** The broker, or the first of the cluster. */
@@ -74,7 +82,14 @@ final class BrokerExtension implements BeforeAllCallback, AfterAllCallback {
                     new ClusterSpec(clusterUser, ports.stream().filter(p -> p != port).toList()))
                 : Optional.empty();
         String brokerName = clustered ? name + "-" + (i + 1) : name;
-        brokers.add(distribution.create(new BrokerSpec(brokerName, port, user, cluster)));
+        StandaloneBroker broker =
+            distribution.create(new BrokerSpec(brokerName, port, user, cluster));
+        brokers.add(broker);
+        if (tls) {
+          broker.useTls(
+              Tls.generate(
+                  broker.instance().getParent(), distribution.javaHome(), TimeSource.system()));
+        }
       }
       for (StandaloneBroker broker : brokers) {
         broker.start(START_TIMEOUT);

@@ -10,7 +10,6 @@ import org.armgals.active.ActiveRuntime;
 import org.armgals.active.FutureTimeoutException;
 import org.armgals.active.FutureValue;
 import org.armgals.active.JmsTransport;
-import org.armgals.active.TimeSource;
 import org.armgals.brokers.RuntimeNode.Count;
 import org.armgals.brokers.RuntimeNode.Counter;
 import org.armgals.brokers.RuntimeNode.Ping;
@@ -58,7 +57,7 @@ class BrokerRestartTest {
           .hasMessageContaining("within " + REPLY_TIMEOUT);
 
       BROKERS.broker().start(BrokerExtension.START_TIMEOUT);
-      awaitAnswer(remote, counter, RECOVERY);
+      RuntimeNode.awaitAnswer(remote, counter.address(), RECOVERY);
       long before = counter.ask(new Count(null, counter.address())).getValue(WAIT);
       for (int i = 0; i < 100; i++) {
         remote.send(new Ping(null, counter.address(), i));
@@ -66,23 +65,5 @@ class BrokerRestartTest {
       assertThat(remote.ask(new Count(null, counter.address())).getValue(WAIT))
           .isEqualTo(before + 100);
     }
-  }
-
-  /** Asks until an answer crosses the broker again: the subscriptions of both sides are back. */
-  private static void awaitAnswer(
-      ActiveRef<Counter> remote, ActiveObject<Counter> counter, Duration timeout) {
-    TimeSource time = TimeSource.system();
-    long deadline = time.nanoTime() + timeout.toNanos();
-    FutureTimeoutException last = null;
-    while (time.nanoTime() - deadline < 0) {
-      try {
-        if (remote.ask(new Sum(null, counter.address(), 2, 3)).getValue(WAIT) == 5) {
-          return;
-        }
-      } catch (FutureTimeoutException e) {
-        last = e;
-      }
-    }
-    throw new IllegalStateException("no answer crossed the broker within " + timeout, last);
   }
 }

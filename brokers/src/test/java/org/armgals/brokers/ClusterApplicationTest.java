@@ -13,7 +13,6 @@ import org.armgals.active.TimeSource;
 import org.armgals.brokers.RuntimeNode.Count;
 import org.armgals.brokers.RuntimeNode.Counter;
 import org.armgals.brokers.RuntimeNode.Ping;
-import org.armgals.brokers.RuntimeNode.Sum;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 
@@ -46,7 +45,7 @@ class ClusterApplicationTest {
       Address found = lookUpOnceRouted(ta, ROUTE);
       assertThat(found).isEqualTo(counter.address());
       ActiveRef<Counter> remote = a.ref(found);
-      awaitAnswer(remote, found, ROUTE);
+      RuntimeNode.awaitAnswer(remote, found, ROUTE);
       for (int i = 0; i < 500; i++) {
         remote.send(new Ping(null, found, i));
       }
@@ -73,22 +72,5 @@ class ClusterApplicationTest {
       }
     }
     throw new IllegalStateException("the name did not cross the cluster within " + timeout, last);
-  }
-
-  /** Asks until an answer crosses both ways (requests one way, answers on active/Future back). */
-  private static void awaitAnswer(ActiveRef<Counter> remote, Address at, Duration timeout) {
-    TimeSource time = TimeSource.system();
-    long deadline = time.nanoTime() + timeout.toNanos();
-    FutureTimeoutException last = null;
-    while (time.nanoTime() - deadline < 0) {
-      try {
-        if (remote.ask(new Sum(null, at, 2, 3)).getValue(WAIT) == 5) {
-          return;
-        }
-      } catch (FutureTimeoutException e) {
-        last = e;
-      }
-    }
-    throw new IllegalStateException("no answer crossed the cluster within " + timeout, last);
   }
 }

@@ -12,6 +12,7 @@ import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
 import org.armgals.active.Event;
 import org.armgals.active.EventProcessor;
+import org.armgals.active.FutureTimeoutException;
 import org.armgals.active.JmsTransport;
 import org.armgals.active.Request;
 import org.armgals.active.TimeSource;
@@ -97,6 +98,27 @@ public final class RuntimeNode {
     command.environment().put("ARMGALS_PREFIX", prefix);
     return ChildProcess.start(
         name, command, broker.instance().getParent().resolve(name + ".log"), TimeSource.system());
+  }
+
+  /**
+   * Asks {@code remote} for sums until one is answered, or throws at {@code timeout}. After a
+   * broker restart, or across the brokers of a cluster, subscriptions come back or across
+   * asynchronously, and a request sent before they have is lost and fails at its reply timeout.
+   */
+  static void awaitAnswer(ActiveRef<Counter> remote, Address at, Duration timeout) {
+    TimeSource time = TimeSource.system();
+    long deadline = time.nanoTime() + timeout.toNanos();
+    FutureTimeoutException last = null;
+    while (time.nanoTime() - deadline < 0) {
+      try {
+        if (remote.ask(new Sum(null, at, 2, 3)).getValue(WAIT) == 5) {
+          return;
+        }
+      } catch (FutureTimeoutException e) {
+        last = e;
+      }
+    }
+    throw new IllegalStateException("no answer crossed the broker within " + timeout, last);
   }
 
   static JmsTransport.Builder transport(String url, String user, String password, String prefix) {

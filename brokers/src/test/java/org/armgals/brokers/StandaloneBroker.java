@@ -4,9 +4,12 @@ import static java.util.Objects.requireNonNull;
 
 import jakarta.jms.Connection;
 import jakarta.jms.JMSException;
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
+import java.util.Optional;
 import org.apache.activemq.artemis.jms.client.ActiveMQConnectionFactory;
 import org.armgals.active.TimeSource;
 import org.jspecify.annotations.Nullable;
@@ -30,6 +33,7 @@ final class StandaloneBroker implements AutoCloseable {
   private final ArtemisDistribution distribution;
   private final TimeSource time;
   private @Nullable ChildProcess process;
+  private @Nullable Tls tls;
   private int starts;
 
   StandaloneBroker(
@@ -50,6 +54,40 @@ final class StandaloneBroker implements AutoCloseable {
 
   String url() {
     return spec.url();
+  }
+
+  /** The TLS material, if the acceptor takes TLS only. */
+  Optional<Tls> tls() {
+    return Optional.ofNullable(tls);
+  }
+
+  /**
+   * Makes the broker's one acceptor take TLS only, with {@code tls}'s key store, by rewriting its
+   * URL in {@code etc/broker.xml}; clients of {@link #connectionFactory()} then trust its trust
+   * store. Only before the broker is started.
+   */
+  void useTls(Tls tls) throws IOException {
+    requireNonNull(tls, "tls");
+    if (process != null || this.tls != null) {
+      throw new IllegalStateException(
+          "TLS is set before the first start, once; broker " + spec.name() + " is " + this);
+    }
+    Path config = instance.resolve("etc/broker.xml");
+    String xml = Files.readString(config);
+    String acceptor = ">" + url() + "?";
+    int at = xml.indexOf(acceptor);
+    if (at < 0 || xml.indexOf(acceptor, at + 1) >= 0) {
+      throw new IllegalStateException(
+          "expected exactly one acceptor '" + acceptor + "' in " + config);
+    }
+    Files.writeString(config, xml.replace(acceptor, acceptor + tls.acceptorParameters()));
+    this.tls = tls;
+  }
+
+  /** The URL with the client's TLS options, if the broker takes TLS. */
+  String clientUrl() {
+    Tls material = tls;
+    return material == null ? url() : url() + "?" + material.clientQuery();
   }
 
   boolean isRunning() {
@@ -109,7 +147,7 @@ final class StandaloneBroker implements AutoCloseable {
 
   /** A connection factory for the broker's user; each call a new one. */
   ActiveMQConnectionFactory connectionFactory() {
-    return new ActiveMQConnectionFactory(url(), spec.user().user(), spec.user().password());
+    return new ActiveMQConnectionFactory(clientUrl(), spec.user().user(), spec.user().password());
   }
 
   /** The broker's last lines of output, or a note that it is not running. */

@@ -3,28 +3,20 @@ package org.armgals.brokers;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import jakarta.jms.Connection;
 import jakarta.jms.JMSException;
 import jakarta.jms.JMSSecurityException;
-import jakarta.jms.MessageConsumer;
-import jakarta.jms.MessageProducer;
-import jakarta.jms.Session;
-import jakarta.jms.Topic;
 import java.nio.file.Files;
-import java.time.Duration;
 import java.util.List;
 import org.apache.activemq.artemis.jms.client.ActiveMQConnectionFactory;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 
 class StandaloneBrokerTest {
-  private static final Duration RECEIVE = Duration.ofSeconds(10);
-
   @RegisterExtension static final BrokerExtension BROKERS = BrokerExtension.standalone("single");
 
   @Test
   void aClientWithTheBrokersCredentialsExchangesMessagesOnATopic() throws Exception {
-    assertThat(exchange(BROKERS.broker().connectionFactory(), "t", 20))
+    assertThat(Topics.exchange(BROKERS.broker().connectionFactory(), "t", 20))
         .isEqualTo(Topics.numbered("m", 20));
   }
 
@@ -69,7 +61,7 @@ class StandaloneBrokerTest {
 
     broker.start(BrokerExtension.START_TIMEOUT);
 
-    assertThat(exchange(broker.connectionFactory(), "after-restart", 5))
+    assertThat(Topics.exchange(broker.connectionFactory(), "after-restart", 5))
         .isEqualTo(Topics.numbered("m", 5));
   }
 
@@ -81,23 +73,7 @@ class StandaloneBrokerTest {
 
     broker.start(BrokerExtension.START_TIMEOUT);
 
-    assertThat(exchange(broker.connectionFactory(), "after-kill", 5))
+    assertThat(Topics.exchange(broker.connectionFactory(), "after-kill", 5))
         .isEqualTo(Topics.numbered("m", 5));
-  }
-
-  /** Publishes {@code count} messages on a topic and returns what a subscriber received. */
-  private static List<String> exchange(ActiveMQConnectionFactory factory, String topic, int count)
-      throws JMSException {
-    try (Connection connection = factory.createConnection()) {
-      connection.start();
-      Session session = connection.createSession(false, Session.AUTO_ACKNOWLEDGE);
-      Topic destination = session.createTopic(topic);
-      MessageConsumer consumer = session.createConsumer(destination);
-      MessageProducer producer = session.createProducer(destination);
-      for (String text : Topics.numbered("m", count)) {
-        Topics.send(session, producer, Topics.DATA, text);
-      }
-      return Topics.receiveData(consumer, count, RECEIVE);
-    }
   }
 }

@@ -1,14 +1,17 @@
 package org.armgals.brokers;
 
+import jakarta.jms.Connection;
 import jakarta.jms.JMSException;
 import jakarta.jms.Message;
 import jakarta.jms.MessageConsumer;
 import jakarta.jms.MessageProducer;
 import jakarta.jms.Session;
 import jakarta.jms.TextMessage;
+import jakarta.jms.Topic;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import org.apache.activemq.artemis.jms.client.ActiveMQConnectionFactory;
 import org.armgals.active.TimeSource;
 import org.jspecify.annotations.Nullable;
 
@@ -73,5 +76,21 @@ final class Topics {
       texts.add(prefix + i);
     }
     return texts;
+  }
+
+  /** Publishes {@code count} messages on a topic and returns what a subscriber received. */
+  static List<String> exchange(ActiveMQConnectionFactory factory, String topic, int count)
+      throws JMSException {
+    try (Connection connection = factory.createConnection()) {
+      connection.start();
+      Session session = connection.createSession(false, Session.AUTO_ACKNOWLEDGE);
+      Topic destination = session.createTopic(topic);
+      MessageConsumer consumer = session.createConsumer(destination);
+      MessageProducer producer = session.createProducer(destination);
+      for (String text : Topics.numbered("m", count)) {
+        Topics.send(session, producer, Topics.DATA, text);
+      }
+      return Topics.receiveData(consumer, count, Duration.ofSeconds(10));
+    }
   }
 }
