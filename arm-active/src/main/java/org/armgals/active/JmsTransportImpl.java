@@ -9,8 +9,6 @@ import jakarta.jms.Message;
 import jakarta.jms.MessageConsumer;
 import jakarta.jms.MessageProducer;
 import jakarta.jms.Session;
-import java.util.ArrayList;
-import java.util.EnumMap;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -49,7 +47,6 @@ final class JmsTransportImpl implements JmsTransport {
   private final WireCodec codec;
   private final Map<Class<?>, Topic> topics;
   private final boolean jmsEverywhere;
-  private final int maxBatch;
   private final String node = UUID.randomUUID().toString();
   private final ActiveMQConnectionFactory factory;
   private final Connection connection;
@@ -77,7 +74,6 @@ final class JmsTransportImpl implements JmsTransport {
     this.codec = new WireCodec(b.allowed, b.maxMessageBytes);
     this.topics = new HashMap<>(b.topics);
     this.jmsEverywhere = b.jmsEverywhere;
-    this.maxBatch = b.maxBatch;
     this.pending = new PendingAnswers(b.timeSource, b.replyTimeout);
     this.factory = new ActiveMQConnectionFactory(url);
     this.connection =
@@ -102,7 +98,17 @@ final class JmsTransportImpl implements JmsTransport {
         Thread.ofPlatform()
             .name("armgals-jms-sender-" + node.substring(0, 8))
             .daemon(true)
-            .unstarted(new Sender(producing, producer));
+            .unstarted(
+                new JmsSender(
+                    outbound,
+                    producing,
+                    producer,
+                    this::topicName,
+                    b.maxBatch,
+                    b.maxMessageBytes,
+                    sent,
+                    batches,
+                    node));
     long period = Math.max(10, Math.min(1_000, b.replyTimeout.toMillis() / 4));
     this.sweeper =
         Executors.newSingleThreadScheduledExecutor(
@@ -191,7 +197,9 @@ final class JmsTransportImpl implements JmsTransport {
     props.put(WireProperties.MSG, WireProperties.MSG_EVENT);
     props.put(WireProperties.TO, destination.runtime());
     Topic topic = topics.getOrDefault(event.getClass(), Topic.ENTITY);
-    enqueue(new Outbound(topic, topic + "|" + destination.runtime(), encode(event), props));
+    enqueue(
+        new Outbound(
+            topic, Outbound.route(topic, destination.runtime()), true, encode(event), props));
   }
 
   @Override
@@ -207,8 +215,8 @@ final class JmsTransportImpl implements JmsTransport {
     props.put(WireProperties.TO, destination.runtime());
     props.put(WireProperties.NODE, node);
     props.put(WireProperties.CORR, corr);
-    enqueue(
-        new Outbound(topics.getOrDefault(request.getClass(), Topic.ENTITY), null, value, props));
+    Topic topic = topics.getOrDefault(request.getClass(), Topic.ENTITY);
+    enqueue(new Outbound(topic, Outbound.route(topic, destination.runtime()), false, value, props));
     return (FutureValue<R>) future;
   }
 
@@ -246,7 +254,7 @@ final class JmsTransportImpl implements JmsTransport {
     Map<String, Object> wire = new HashMap<>(props);
     wire.put(WireProperties.MSG, WireProperties.MSG_PUBLISH);
     wire.put(WireProperties.FROM, node);
-    enqueue(new Outbound(topic, null, value, wire));
+    enqueue(new Outbound(topic, null, false, value, wire));
   }
 
   @Override
@@ -282,7 +290,7 @@ final class JmsTransportImpl implements JmsTransport {
   void publishMarker(Topic topic, String subscription) {
     Map<String, Object> props = new HashMap<>();
     props.put(WireProperties.MARKER, subscription);
-    enqueue(new Outbound(topic, null, codec.encodeValue(null), props));
+    enqueue(new Outbound(topic, null, false, codec.encodeValue(null), props));
   }
 
   /** A published event from the broker; null (counted, logged) if it is not a good one. */
@@ -351,7 +359,7 @@ final class JmsTransportImpl implements JmsTransport {
     props.put(WireProperties.NAME, name);
     props.put(WireProperties.NODE, node);
     props.put(WireProperties.CORR, corr);
-    enqueue(new Outbound(Topic.NAMES, null, codec.encodeValue(null), props));
+    enqueue(new Outbound(Topic.NAMES, null, false, codec.encodeValue(null), props));
     return (FutureValue<Address>) (FutureValue<?>) future;
   }
 
@@ -407,118 +415,6 @@ final class JmsTransportImpl implements JmsTransport {
     if (closed.get()) {
       throw new IllegalStateException("JMS transport " + node + " is closed");
     }
-  }
-
-  /** The sender thread: takes what is queued and sends it, several events per message if it can. */
-  private final class Sender implements Runnable {
-    private final Session session;
-    private final MessageProducer producer;
-    private final Map<Topic, jakarta.jms.Topic> destinations = new EnumMap<>(Topic.class);
-    private final List<Outbound> drained = new ArrayList<>();
-
-    Sender(Session session, MessageProducer producer) throws JMSException {
-      this.session = session;
-      this.producer = producer;
-      for (Topic t : Topic.values()) {
-        destinations.put(t, session.createTopic(topicName(t)));
-      }
-    }
-
-    @Override
-    public void run() {
-      try {
-        while (true) {
-          drained.add(outbound.take());
-          outbound.drainTo(drained, QUEUE);
-          if (!sendAll()) {
-            return;
-          }
-          drained.clear();
-        }
-      } catch (InterruptedException e) {
-        Thread.currentThread().interrupt();
-      } finally {
-        try {
-          session.close();
-        } catch (JMSException e) {
-          LOG.debug("closing the producing session", e);
-        }
-      }
-    }
-
-    /** Sends {@link #drained} in order per batch key; false at {@link Outbound#STOP}. */
-    private boolean sendAll() {
-      Map<String, List<Outbound>> groups = new LinkedHashMap<>();
-      boolean go = true;
-      for (Outbound o : drained) {
-        if (o == Outbound.STOP) {
-          go = false;
-          break;
-        }
-        String key = o.batchKey();
-        groups
-            .computeIfAbsent(key != null ? key : "#" + groups.size(), k -> new ArrayList<>())
-            .add(o);
-      }
-      for (List<Outbound> g : groups.values()) {
-        for (int i = 0; i < g.size(); i += maxBatch) {
-          send(g.subList(i, Math.min(g.size(), i + maxBatch)));
-        }
-      }
-      return go;
-    }
-
-    private void send(List<Outbound> group) {
-      Outbound first = group.get(0);
-      try {
-        BytesMessage m = session.createBytesMessage();
-        List<byte[]> values = new ArrayList<>(group.size());
-        int bytes = 5;
-        for (Outbound o : group) {
-          values.add(o.value());
-          bytes += o.value().length;
-        }
-        if (group.size() > 1 && bytes > codec.maxBytes()) {
-          int half = group.size() / 2;
-          send(group.subList(0, half));
-          send(group.subList(half, group.size()));
-          return;
-        }
-        m.writeBytes(WireCodec.body(values));
-        if (group.size() == 1) {
-          for (Map.Entry<String, Object> p : first.properties().entrySet()) {
-            m.setObjectProperty(p.getKey(), p.getValue());
-          }
-        } else {
-          m.setStringProperty(WireProperties.MSG, WireProperties.MSG_BATCH);
-          m.setObjectProperty(WireProperties.TO, first.properties().get(WireProperties.TO));
-          m.setIntProperty(WireProperties.COUNT, group.size());
-          batches.increment();
-        }
-        // Counted before the send: the answer to a request may come back before send returns.
-        int counted = counted(first) ? group.size() : 0;
-        sent.add(counted);
-        try {
-          producer.send(destinations.get(first.topic()), m);
-        } catch (JMSException | RuntimeException e) {
-          sent.add(-counted);
-          throw e;
-        }
-      } catch (JMSException | RuntimeException e) {
-        LOG.error(
-            "JMS transport {}: {} message(s) to {} lost: {}",
-            node,
-            group.size(),
-            topicName(first.topic()),
-            e.toString());
-      }
-    }
-  }
-
-  /** Whether a message counts as sent: events, requests and answers; not markers or look-ups. */
-  private static boolean counted(Outbound o) {
-    Object kind = o.properties().get(WireProperties.MSG);
-    return kind != null && !WireProperties.MSG_LOOKUP.equals(kind);
   }
 
   // ------------------------------------------------------------------ receiving
@@ -630,7 +526,7 @@ final class JmsTransportImpl implements JmsTransport {
       props.put(WireProperties.ERROR, text.length() > 1_000 ? text.substring(0, 1_000) : text);
     }
     try {
-      enqueue(new Outbound(Topic.FUTURE, null, body, props));
+      enqueue(new Outbound(Topic.FUTURE, null, false, body, props));
     } catch (RuntimeException e) {
       LOG.warn(
           "JMS transport {}: the answer to request {} of {} is lost", this.node, corr, node, e);

@@ -8,17 +8,24 @@ import org.jspecify.annotations.Nullable;
  * encoded value and its properties. Immutable.
  *
  * @param topic where it goes
- * @param batchKey events with the same non-null key may share a message (same topic, same
- *     destination runtime); null: always alone
+ * @param route the stream it keeps its order in (topic and destination runtime); null: none
+ * @param batchable whether it may share a message with the events before and after it on its route
  * @param value the encoded value (see {@link WireCodec#encodeValue})
  * @param properties its JMS properties
  */
 record Outbound(
     JmsTransport.Topic topic,
-    @Nullable String batchKey,
+    @Nullable String route,
+    boolean batchable,
     byte[] value,
     Map<String, Object> properties) {
 
   /** Stops the sender thread. */
-  static final Outbound STOP = new Outbound(JmsTransport.Topic.ENTITY, null, new byte[0], Map.of());
+  static final Outbound STOP =
+      new Outbound(JmsTransport.Topic.ENTITY, null, false, new byte[0], Map.of());
+
+  /** The route of what goes to {@code runtime} on {@code topic}. */
+  static String route(JmsTransport.Topic topic, String runtime) {
+    return topic + "|" + runtime;
+  }
 }

@@ -83,6 +83,48 @@ class JmsTransportTest {
     }
   }
 
+  /** Records pings and sums in the order it takes them. */
+  static final class Orderly implements EventProcessor {
+    final List<Long> seen = new java.util.concurrent.CopyOnWriteArrayList<>();
+
+    @Override
+    public void process(Event event) {
+      seen.add(((Ping) event).n());
+    }
+
+    @Override
+    public Object answer(Request<?> request) {
+      Sum s = (Sum) request;
+      seen.add((long) s.a());
+      return s.a();
+    }
+  }
+
+  @Test
+  void eventsAndRequestsFromOneSenderKeepTheirOrderAcrossBatches() {
+    try (Pair p = new Pair("mixed")) {
+      Orderly servant = new Orderly();
+      ActiveObject<Orderly> o = p.b.spawn(servant);
+      ActiveRef<Orderly> remote = p.a.ref(o.address());
+      List<FutureValue<Integer>> answers = new ArrayList<>();
+      List<Long> expected = new ArrayList<>();
+      for (int i = 0; i < 3_000; i++) {
+        if (i % 10 == 0) {
+          answers.add(remote.ask(new Sum(null, o.address(), i, 0)));
+        } else {
+          remote.send(new Ping(null, o.address(), i));
+        }
+        expected.add((long) i);
+      }
+      for (FutureValue<Integer> f : answers) {
+        f.getValue(WAIT);
+      }
+      o.callWhen(s -> s.seen.size() == 3_000, s -> true).getValue(WAIT);
+      assertThat(servant.seen).isEqualTo(expected);
+      assertThat(p.ta.stats().batches()).isPositive();
+    }
+  }
+
   @Test
   void nestedRecordsListsMapsEnumsAndBytesCrossIntact() {
     try (Pair p = new Pair("values")) {
