@@ -1,0 +1,38 @@
+package org.armgals.presence;
+
+import static java.util.Objects.requireNonNull;
+
+import java.time.Duration;
+
+/** A change in the set of runtimes present on the broker, as one presence saw it. */
+public sealed interface PresenceEvent {
+
+  /** The runtime the change is about. */
+  String runtime();
+
+  /** The runtime beat for the first time, or again after it was lost. */
+  record Joined(String runtime) implements PresenceEvent {
+    public Joined {
+      requireNonNull(runtime, "runtime");
+    }
+  }
+
+  /** The runtime said it is leaving (its presence was closed). */
+  record Left(String runtime) implements PresenceEvent {
+    public Left {
+      requireNonNull(runtime, "runtime");
+    }
+  }
+
+  /**
+   * The runtime fell silent for {@code silence}, longer than the missed beats allow: its JVM was
+   * killed or hangs, or its link to the broker is down. Requests waiting for its answers will not
+   * get them.
+   */
+  record Lost(String runtime, Duration silence) implements PresenceEvent {
+    public Lost {
+      requireNonNull(runtime, "runtime");
+      requireNonNull(silence, "silence");
+    }
+  }
+}

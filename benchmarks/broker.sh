@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# Runs the broker benchmark: benchmarks/broker.sh [--warmup n] [--runs n] [--messages n]
+#                                                 [--requests n] [--no-build] [name...]
+#
+#   name        events futurertt (default: both)
+#   --warmup n  warm-up rounds, printed with a "warmup" prefix (default 2); --runs n  measured
+#               rounds (default 3)
+#   --messages n  events per events run (default 200000); --requests n  round trips per
+#               futurertt run (default 20000)
+#   --no-build  use benchmarks/target/benchmarks.jar as it is
+#
+# Builds benchmarks/target/benchmarks.jar with the Maven wrapper, then runs, in one JVM over one
+# embedded Artemis broker (persistence off, an in-VM acceptor and a netty acceptor on 127.0.0.1),
+# rounds of every workload on each transport (invm, netty) with each implementation (raw Jakarta
+# JMS; armgals: two runtimes, each with its own JmsTransport), interleaved so that all see much
+# the same load.
+# Uses a JDK >= 21 (JAVA_HOME if it is one, else the newest under /usr/lib/jvm) with the options
+# in BROKER_JAVA_OPTS, default "-Xms1g -Xmx1g". Prints one line per run (docs/benchmarks-broker.md):
+#   broker name=events impl=<raw|armgals> transport=<invm|netty> ops_per_s=<x>
+#   broker name=futurertt impl=<raw|armgals> transport=<invm|netty> p50_us=<x> p99_us=<y>
+# and exits non-zero if a run fails.
+set -euo pipefail
+
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(dirname "$here")"
+jar="$here/target/benchmarks.jar"
+
+args=()
+build=1
+while (($#)); do
+  case "$1" in
+    --warmup | --runs | --messages | --requests)
+      args+=("$1" "${2:?$1 needs a count}")
+      shift 2 ;;
+    --no-build) build=0; shift ;;
+    -h | --help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "broker.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
+    *) args+=("$1"); shift ;;
+  esac
+done
+
+# The major version of the JDK at $1, or nothing if it is not a JDK.
+jdk_major() {
+  local home="$1" version=""
+  [[ -x "$home/bin/java" ]] || return 0
+  if [[ -f "$home/release" ]]; then
+    version="$(sed -n 's/^JAVA_VERSION="\(.*\)"/\1/p' "$home/release")"
+  fi
+  if [[ -z "$version" ]]; then
+    version="$("$home/bin/java" -XshowSettings:properties -version 2>&1 |
+      sed -n 's/^ *java\.specification\.version = //p')"
+  fi
+  version="${version#1.}"
+  echo "${version%%[.+-]*}"
+}
+
+find_java() {
+  local best="" best_major=0 home major
+  if [[ -n "${JAVA_HOME:-}" ]]; then
+    major="$(jdk_major "$JAVA_HOME")"
+    if [[ -n "$major" ]] && ((major >= 21)); then
+      echo "$JAVA_HOME/bin/java"
+      return
+    fi
+  fi
+  for home in /usr/lib/jvm/*/; do
+    home="${home%/}"
+    [[ -L "$home" ]] && continue
+    major="$(jdk_major "$home")"
+    if [[ -n "$major" ]] && ((major > best_major)); then
+      best="$home"
+      best_major="$major"
+    fi
+  done
+  if ((best_major < 21)); then
+    echo "broker.sh: no JDK >= 21 (JAVA_HOME=${JAVA_HOME:-unset}, nothing newer under /usr/lib/jvm)" >&2
+    exit 1
+  fi
+  echo "$best/bin/java"
+}
+
+java="$(find_java)"
+if ((build)); then
+  (cd "$root" && ./mvnw -B -q -pl benchmarks -am package -DskipTests) >&2
+fi
+[[ -f "$jar" ]] || { echo "broker.sh: $jar is missing; run without --no-build" >&2; exit 1; }
+
+read -r -a opts <<<"${BROKER_JAVA_OPTS:--Xms1g -Xmx1g}"
+if (($(jdk_major "$(dirname "$(dirname "$java")")") >= 23)); then
+  # Netty (inside Artemis) still uses sun.misc.Unsafe; say it is allowed, as it is by default,
+  # without the warning.
+  opts+=(--sun-misc-unsafe-memory-access=allow)
+fi
+if (($(jdk_major "$(dirname "$(dirname "$java")")") >= 22)); then
+  # Artemis loads its native journal library at start-up (unused here): allowed, without the warning.
+  opts+=(--enable-native-access=ALL-UNNAMED)
+fi
+echo "# $("$java" -version 2>&1 | head -1); options: ${opts[*]}; $(nproc) cores" >&2
+exec "$java" "${opts[@]}" -cp "$jar" org.armgals.bench.broker.BrokerBench "${args[@]}"

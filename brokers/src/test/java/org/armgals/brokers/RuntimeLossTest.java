@@ -1,0 +1,86 @@
+package org.armgals.brokers;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.time.Duration;
+import java.util.List;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import org.armgals.presence.Presence;
+import org.armgals.presence.PresenceEvent;
+import org.armgals.presence.PresenceEvent.Joined;
+import org.armgals.presence.PresenceEvent.Left;
+import org.armgals.presence.PresenceEvent.Lost;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
+
+/**
+ * A runtime JVM killed (SIGKILL) or ending normally, seen from another runtime through its presence
+ * on the standalone broker: lost after four missed beats, or left when it said so.
+ */
+class RuntimeLossTest {
+  private static final Duration WAIT = Duration.ofSeconds(60);
+
+  @RegisterExtension static final BrokerExtension BROKERS = BrokerExtension.standalone("loss");
+
+  private final BlockingQueue<PresenceEvent> heard = new LinkedBlockingQueue<>();
+
+  private Presence watcher(String prefix) {
+    StandaloneBroker broker = BROKERS.broker();
+    return Presence.builder()
+        .broker(broker.url(), broker.spec().user().user(), broker.spec().user().password())
+        .prefix(prefix)
+        .runtime("watcher")
+        .period(RuntimeNode.PRESENCE_PERIOD)
+        .listener(heard::add)
+        .build();
+  }
+
+  private PresenceEvent next() throws InterruptedException {
+    PresenceEvent event = heard.poll(WAIT.toSeconds(), TimeUnit.SECONDS);
+    assertThat(event).as("a presence event within %s", WAIT).isNotNull();
+    return event;
+  }
+
+  private static String runtimeOf(String ready) {
+    return ready.substring("ready runtime=".length(), ready.indexOf(" at="));
+  }
+
+  @Test
+  void aKilledRuntimeJvmIsLostAfterItsMissedBeats() throws Exception {
+    try (Presence watcher = watcher("killed");
+        ChildProcess node =
+            RuntimeNode.launch(BROKERS.broker(), "killed-node", "killed", List.of("serve"))) {
+      String runtime = runtimeOf(node.awaitLine("ready", line -> line.startsWith("ready "), WAIT));
+      assertThat(next()).isEqualTo(new Joined(runtime));
+
+      node.kill();
+
+      PresenceEvent lost = next();
+      assertThat(lost)
+          .isInstanceOf(Lost.class)
+          .extracting(PresenceEvent::runtime)
+          .isEqualTo(runtime);
+      assertThat(((Lost) lost).silence())
+          .isGreaterThan(RuntimeNode.PRESENCE_PERIOD.multipliedBy(4));
+      assertThat(watcher.peers()).doesNotContain(runtime);
+    }
+  }
+
+  @Test
+  void aRuntimeJvmThatEndsNormallyIsHeardLeaving() throws Exception {
+    try (Presence watcher = watcher("ended");
+        ChildProcess node =
+            RuntimeNode.launch(BROKERS.broker(), "ended-node", "ended", List.of("serve"))) {
+      String runtime = runtimeOf(node.awaitLine("ready", line -> line.startsWith("ready "), WAIT));
+      assertThat(next()).isEqualTo(new Joined(runtime));
+
+      node.closeInput();
+
+      assertThat(node.awaitExit(WAIT)).isZero();
+      assertThat(next()).isEqualTo(new Left(runtime));
+      assertThat(watcher.peers()).isEmpty();
+    }
+  }
+}
