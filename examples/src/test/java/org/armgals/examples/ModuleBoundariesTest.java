@@ -78,6 +78,7 @@ class ModuleBoundariesTest {
       List.of(
           "org.armgals.active",
           "org.armgals.representation",
+          "org.armgals.presence",
           "org.armgals.kernel",
           "org.armgals.gals",
           "org.armgals.maam",
@@ -177,6 +178,7 @@ class ModuleBoundariesTest {
   @CsvSource({
     "arm-representation, org.armgals.representation",
     "arm-kernel, org.armgals.kernel",
+    "arm-presence, org.armgals.presence",
     "maam-framework, org.armgals.maam",
     "maam-sim, org.armgals.maam.sim"
   })
