@@ -20,6 +20,7 @@ import org.armgals.active.Clock;
 import org.armgals.active.ClockStats;
 import org.armgals.active.Event;
 import org.armgals.active.EventProcessor;
+import org.armgals.active.Filter;
 import org.armgals.active.Future;
 import org.armgals.active.FutureEvent;
 import org.armgals.active.FutureInterruptedException;
@@ -88,6 +89,7 @@ class ModuleBoundariesTest {
           Event.class,
           EventProcessor.class,
           Future.class,
+          Filter.class,
           FutureEvent.class,
           FutureInterruptedException.class,
           FutureNotAvailableException.class,

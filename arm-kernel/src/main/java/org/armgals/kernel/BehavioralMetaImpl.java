@@ -1,0 +1,226 @@
+package org.armgals.kernel;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.OptionalLong;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+import org.armgals.active.Address;
+import org.armgals.active.Event;
+import org.armgals.active.Filter;
+import org.armgals.active.Future;
+import org.armgals.active.FutureValue;
+import org.armgals.kernel.spi.MetaContext;
+import org.armgals.kernel.spi.MetaPolicy;
+import org.armgals.representation.State;
+
+/**
+ * A behavioral meta-entity: the models of its base entities, their filters, its policy and the
+ * damping of its adaptations. Models and filters are confined to its object; {@link #views} is what
+ * other threads (JMX) read.
+ */
+final class BehavioralMetaImpl extends EntityImpl<FieldState> implements BehavioralMeta {
+  private final MetaPolicy policy;
+  private final Damping damping;
+  private final Map<Address, Model<?>> models = new LinkedHashMap<>();
+  private final List<Entity> bases = new CopyOnWriteArrayList<>();
+  final Map<Address, ModelView> views = new ConcurrentHashMap<>();
+  private final MetaContext context = new Context();
+
+  BehavioralMetaImpl(
+      KernelImpl kernel,
+      String name,
+      StructuralMetaImpl<FieldState> meta,
+      EntityServant<FieldState> servant,
+      MetaPolicy policy,
+      Damping damping) {
+    super(kernel, name, meta, servant);
+    this.policy = requireNonNull(policy, "policy");
+    this.damping = requireNonNull(damping, "damping");
+  }
+
+  @Override
+  boolean handle(Event event) throws Exception {
+    switch (event) {
+      case Notification n -> notified(n);
+      case AdaptationAck a -> {
+        Model<?> m = models.get(a.sender());
+        if (m != null && a.applied() && a.version() > m.appliedVersion) {
+          m.appliedVersion = a.version();
+          publish(m);
+        }
+      }
+      default -> {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  private void notified(Notification n) throws Exception {
+    Model<?> m = models.get(n.entity());
+    if (m == null) {
+      return; // from an entity deleted from this meta, still in flight
+    }
+    long now = kernel.nanoTime();
+    if (m.integrate(n, now)) {
+      m.entity().object().send(new ResyncRequest(address(), n.entity(), m.lastSeq()));
+    }
+    publish(m);
+    if (Selectors.matches(m.filter, n)) {
+      policy.onNotification(context, n);
+    }
+  }
+
+  private void publish(Model<?> m) {
+    views.put(m.address(), m.view(kernel.nanoTime()));
+  }
+
+  private Model<?> model(Address entity) {
+    Model<?> m = models.get(requireNonNull(entity, "entity"));
+    if (m == null) {
+      throw new IllegalArgumentException(
+          entity + " is not a base entity of " + name() + "; its base entities are " + bases);
+    }
+    return m;
+  }
+
+  @Override
+  public Future addBaseLevelEntity(Entity entity) {
+    EntityImpl<?> e = kernel.own(entity);
+    return object()
+        .signal(
+            own -> {
+              if (models.containsKey(e.address())) {
+                return;
+              }
+              BehavioralMetaImpl previous = e.servant.meta();
+              if (previous != null && previous != this) {
+                previous.deleteBaseLevelEntity(e);
+              }
+              Model<?> m =
+                  new Model<>(e, damping, kernel.options().resyncRetry(), kernel.nanoTime());
+              models.put(e.address(), m);
+              bases.add(e);
+              publish(m);
+              e.object().send(s -> s.attach(this));
+              own.call(KernelBehaviors.ADD_BASE, e.name());
+            });
+  }
+
+  @Override
+  public Future deleteBaseLevelEntity(Entity entity) {
+    EntityImpl<?> e = kernel.own(entity);
+    return object()
+        .signal(
+            own -> {
+              if (models.remove(e.address()) == null) {
+                return;
+              }
+              bases.remove(e);
+              views.remove(e.address());
+              if (!e.isStopped()) {
+                e.object().send(s -> s.detach(this));
+              }
+              own.call(KernelBehaviors.DELETE_BASE, e.name());
+            });
+  }
+
+  @Override
+  public List<Entity> baseLevelEntities() {
+    return List.copyOf(bases);
+  }
+
+  @Override
+  public Future setFilter(Entity entity, String selector) {
+    EntityImpl<?> e = kernel.own(entity);
+    Filter compiled = Filter.selector(selector);
+    return object().signal(own -> swapFilter(e.address(), compiled));
+  }
+
+  private void swapFilter(Address entity, Filter compiled) {
+    Model<?> m = model(entity);
+    m.filter = compiled;
+    publish(m);
+  }
+
+  @Override
+  public FutureValue<ModelView> model(Entity entity) {
+    EntityImpl<?> e = kernel.own(entity);
+    return object().call(own -> model(e.address()).view(kernel.nanoTime()));
+  }
+
+  @Override
+  public FutureValue<OptionalLong> adapt(Entity entity, Adaptation adaptation) {
+    EntityImpl<?> e = kernel.own(entity);
+    requireNonNull(adaptation, "adaptation");
+    return object().call(own -> adaptNow(e.address(), adaptation));
+  }
+
+  private OptionalLong adaptNow(Address entity, Adaptation adaptation) {
+    Model<?> m = model(entity);
+    if (!m.governor.tryAdapt(kernel.nanoTime())) {
+      publish(m);
+      return OptionalLong.empty();
+    }
+    long version = ++m.requestedVersion;
+    m.entity().object().send(new AdaptationRequest(address(), entity, version, adaptation));
+    publish(m);
+    return OptionalLong.of(version);
+  }
+
+  long suppressed() {
+    long total = 0;
+    for (ModelView v : views.values()) {
+      total += v.suppressedAdaptations();
+    }
+    return total;
+  }
+
+  /** What the policy may do; used only on this meta's object. */
+  private final class Context implements MetaContext {
+    @Override
+    public BehavioralMeta self() {
+      return BehavioralMetaImpl.this;
+    }
+
+    @Override
+    public Entity entity(Address entity) {
+      return BehavioralMetaImpl.this.model(entity).entity();
+    }
+
+    @Override
+    public ModelView model(Address entity) {
+      return BehavioralMetaImpl.this.model(entity).view(kernel.nanoTime());
+    }
+
+    @Override
+    public OptionalLong adapt(Address entity, Adaptation adaptation) {
+      return adaptNow(entity, requireNonNull(adaptation, "adaptation"));
+    }
+
+    @Override
+    public void setFilter(Address entity, String selector) {
+      swapFilter(entity, Filter.selector(selector));
+    }
+
+    @Override
+    public long nanoTime() {
+      return kernel.nanoTime();
+    }
+  }
+
+  /** The state each model believes, by entity name, for JMX. */
+  Map<String, String> modelStates() {
+    Map<String, String> m = new LinkedHashMap<>();
+    for (Entity b : bases) {
+      ModelView v = views.get(b.address());
+      State s = v == null ? null : v.state();
+      m.put(b.name(), s == null ? "?" : s.observe().toString());
+    }
+    return m;
+  }
+}

@@ -1,0 +1,297 @@
+package org.armgals.kernel;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.ArrayDeque;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.armgals.active.Event;
+import org.armgals.active.EventProcessor;
+import org.armgals.active.ObjectStoppedException;
+import org.armgals.active.ReactiveCycle;
+import org.armgals.representation.Activation;
+import org.armgals.representation.Behaviors;
+import org.armgals.representation.State;
+import org.armgals.representation.Step;
+import org.jspecify.annotations.Nullable;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The servant of an entity's active object: {@link #process} is the entity's main behavior (paper
+ * §4.2). It runs the activation, notifies the behavioral meta of each step as the notification
+ * policy says, applies adaptation requests and harmonizes with its structural meta.
+ *
+ * <p>Threading: everything but the volatile snapshots ({@link #current}, {@link #policy}, {@link
+ * #meta}, {@link #appliedVersion}) is confined to the entity's object.
+ */
+final class EntityServant<E extends State> implements EventProcessor, ReactiveCycle {
+  private static final Logger LOG = LoggerFactory.getLogger(EntityServant.class);
+
+  private final Activation<E> activation;
+  private final AdaptationPoint adaptationPoint;
+  private @Nullable EntityImpl<E> owner;
+
+  private volatile E current;
+  private volatile NotificationPolicy policy;
+  private volatile @Nullable BehavioralMetaImpl meta;
+  private volatile long appliedVersion;
+
+  private long seq;
+  private @Nullable Map<String, Object> lastObserved;
+  private final Map<String, Boolean> below = new HashMap<>();
+  private final ArrayDeque<AdaptationRequest> pending = new ArrayDeque<>();
+  private boolean instantBegun;
+
+  EntityServant(Activation<E> activation, EntityOptions options) {
+    this.activation = requireNonNull(activation, "activation");
+    this.adaptationPoint = options.adaptationPoint();
+    this.policy = options.notification();
+    this.current = activation.state();
+  }
+
+  void owner(EntityImpl<E> entity) {
+    this.owner = entity;
+  }
+
+  private EntityImpl<E> owner() {
+    return requireNonNull(owner, "owner");
+  }
+
+  E current() {
+    return current;
+  }
+
+  NotificationPolicy policy() {
+    return policy;
+  }
+
+  @Nullable BehavioralMetaImpl meta() {
+    return meta;
+  }
+
+  long appliedVersion() {
+    return appliedVersion;
+  }
+
+  Behaviors<E> behaviors() {
+    return activation.behaviors();
+  }
+
+  @Override
+  public void process(Event event) throws Exception {
+    beginInstant();
+    switch (event) {
+      case Stimulus s -> {
+        for (Step<E> step : activation.dispatch(s.trigger(), s.input())) {
+          stepped(step, s.input());
+        }
+      }
+      case AdaptationRequest r -> {
+        if (adaptationPoint == AdaptationPoint.ON_ARRIVAL) {
+          adapt(r);
+        } else {
+          pending.add(r);
+        }
+      }
+      case ResyncRequest r -> snapshot();
+      default -> {
+        if (!owner().handle(event)) {
+          throw new IllegalArgumentException(
+              "entity '"
+                  + owner().name()
+                  + "' cannot process "
+                  + event
+                  + "; expected a Stimulus, an AdaptationRequest or a ResyncRequest");
+        }
+      }
+    }
+  }
+
+  @Override
+  public void onCycle(long instant) {
+    if (adaptationPoint == AdaptationPoint.END_OF_CYCLE
+        || (adaptationPoint == AdaptationPoint.BEGIN_OF_CYCLE && !instantBegun)) {
+      applyPending();
+    }
+    instantBegun = false;
+  }
+
+  /** The first event of an instant is where a BEGIN_OF_CYCLE entity applies its adaptations. */
+  private void beginInstant() {
+    if (!instantBegun) {
+      instantBegun = true;
+      if (adaptationPoint == AdaptationPoint.BEGIN_OF_CYCLE) {
+        applyPending();
+      }
+    }
+  }
+
+  private void applyPending() {
+    AdaptationRequest r;
+    while ((r = pending.poll()) != null) {
+      adapt(r);
+    }
+  }
+
+  /** Applies the behavior named {@code behavior}: {@link Entity#call}. */
+  @Nullable Object call(String behavior, @Nullable Object input) {
+    beginInstant();
+    Step<E> step = activation.apply(behavior, input);
+    stepped(step, input);
+    return step.result();
+  }
+
+  /** Flow 5: the structural meta's behaviors replace this entity's. */
+  void harmonize(Behaviors<E> behaviors) {
+    activation.harmonize(behaviors);
+  }
+
+  /** A behavioral meta takes this entity: it is told everything from a complete state on. */
+  void attach(BehavioralMetaImpl next) {
+    meta = next;
+    snapshot();
+  }
+
+  /** A behavioral meta lets go of this entity. */
+  void detach(BehavioralMetaImpl previous) {
+    if (meta == previous) {
+      meta = null;
+    }
+  }
+
+  /** A failure of this entity's object (DESIGN semantics 8), on the object's thread. */
+  void failed(@Nullable Event event, Throwable error) {
+    BehavioralMetaImpl m = meta;
+    if (m != null) {
+      notify(
+          m,
+          new FailureEvent(
+              owner().address(),
+              m.address(),
+              ++seq,
+              error.getClass().getName(),
+              String.valueOf(error.getMessage()),
+              event == null ? "" : event.toString()));
+    }
+  }
+
+  private void adapt(AdaptationRequest r) {
+    if (r.version() <= appliedVersion) {
+      ack(r, "version " + r.version() + " is not after the applied version " + appliedVersion);
+      return;
+    }
+    try {
+      switch (r.adaptation()) {
+        case Adaptation.SetNotification s -> {
+          policy = s.policy();
+          lastObserved = null;
+          if (s.policy().states()) {
+            snapshot();
+          }
+        }
+        case Adaptation.ApplyBehavior a ->
+            stepped(activation.apply(a.behavior(), a.input()), a.input());
+      }
+    } catch (RuntimeException e) {
+      ack(r, e.toString());
+      return;
+    }
+    appliedVersion = r.version();
+    ack(r, null);
+  }
+
+  private void ack(AdaptationRequest r, @Nullable String failure) {
+    AdaptationAck ack =
+        new AdaptationAck(r.destination(), r.sender(), r.version(), failure == null, failure);
+    try {
+      owner().kernel.runtime().ref(r.sender()).send(ack);
+    } catch (ObjectStoppedException e) {
+      LOG.debug("adaptation ack {} not delivered: its meta is stopped", ack);
+    }
+  }
+
+  private void snapshot() {
+    current = activation.state();
+    BehavioralMetaImpl m = meta;
+    if (m != null) {
+      Map<String, Object> all = current.observe();
+      lastObserved = project(all, policy);
+      notify(m, new StateEvent(owner().address(), m.address(), ++seq, null, all, true));
+    }
+  }
+
+  private void stepped(Step<E> step, @Nullable Object input) {
+    current = step.after();
+    NotificationPolicy p = policy;
+    BehavioralMetaImpl m = meta;
+    Map<String, Object> observed = step.after().observe();
+    if (m != null
+        && p.actions()
+        && (p.behaviors().isEmpty() || p.behaviors().contains(step.behavior()))) {
+      notify(m, new ActionEvent(owner().address(), m.address(), ++seq, step.behavior(), input));
+    }
+    if (m != null && p.states()) {
+      Map<String, Object> projected = project(observed, p);
+      if (!projected.equals(lastObserved)) {
+        lastObserved = projected;
+        boolean complete = projected.size() == observed.size();
+        notify(
+            m,
+            new StateEvent(
+                owner().address(), m.address(), ++seq, step.behavior(), projected, complete));
+      }
+    }
+    thresholds(m, p.thresholds(), observed);
+    if (m != null && step.result() instanceof Reflect r) {
+      notify(
+          m,
+          new ReflectiveRequest(owner().address(), m.address(), ++seq, r.subject(), r.argument()));
+    }
+  }
+
+  private void thresholds(
+      @Nullable BehavioralMetaImpl m, List<Threshold> watched, Map<String, Object> observed) {
+    for (Threshold t : watched) {
+      if (!(observed.get(t.property()) instanceof Number n)) {
+        continue;
+      }
+      double v = n.doubleValue();
+      Boolean was = below.get(t.name());
+      Boolean now = v < t.low() ? Boolean.TRUE : v > t.high() ? Boolean.FALSE : was;
+      if (now == null) {
+        continue;
+      }
+      below.put(t.name(), now);
+      if (was != null && !was.equals(now) && m != null) {
+        notify(
+            m,
+            new ThresholdEvent(
+                owner().address(), m.address(), ++seq, t.name(), t.property(), v, now));
+      }
+    }
+  }
+
+  private static Map<String, Object> project(Map<String, Object> observed, NotificationPolicy p) {
+    if (p.observed().isEmpty()) {
+      return observed;
+    }
+    Map<String, Object> m = new LinkedHashMap<>();
+    for (var e : observed.entrySet()) {
+      if (p.observed().contains(e.getKey())) {
+        m.put(e.getKey(), e.getValue());
+      }
+    }
+    return m;
+  }
+
+  private void notify(BehavioralMetaImpl m, Notification n) {
+    try {
+      m.object().send(n);
+    } catch (ObjectStoppedException e) {
+      LOG.debug("notification {} not delivered: its meta is stopped", n);
+    }
+  }
+}

@@ -1,0 +1,252 @@
+package org.armgals.kernel;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import org.armgals.active.ActiveRuntime;
+import org.armgals.active.Address;
+import org.armgals.kernel.spi.MetaPolicy;
+import org.armgals.representation.Behaviors;
+import org.armgals.representation.State;
+import org.armgals.representation.StateSpace;
+
+/** The bootstrapped kernel: its four kernel entities and the registry of all its entities. */
+final class KernelImpl implements Kernel {
+  static final String ENTITY = "Entity";
+  static final String STRUCTURAL_META = "StructuralMeta";
+  static final String BEHAVIORAL_META = "BehavioralMeta";
+  static final String BASIC_BEHAVIORAL_META = "basicBehavioralMeta";
+
+  private final ActiveRuntime runtime;
+  private final KernelOptions options;
+  private final Set<String> names = ConcurrentHashMap.newKeySet();
+  private final Map<Address, EntityImpl<?>> byAddress = new ConcurrentHashMap<>();
+  private final Map<String, EntityImpl<?>> byName = new ConcurrentHashMap<>();
+  private final Jmx jmx;
+  private volatile boolean closed;
+
+  // Set by bootstrap before the kernel is published: the kernel entities refer to each other.
+  private StructuralMetaImpl<FieldState> entity;
+  private StructuralMetaImpl<FieldState> structural;
+  private StructuralMetaImpl<FieldState> behavioral;
+  private BehavioralMetaImpl basic;
+
+  private static final EntityOptions KERNEL_OPTIONS =
+      EntityOptions.defaults().withNotification(NotificationPolicy.actionsOnly());
+
+  private KernelImpl(ActiveRuntime runtime, KernelOptions options) {
+    this.runtime = requireNonNull(runtime, "runtime");
+    this.options = requireNonNull(options, "options");
+    this.jmx = new Jmx(runtime.name(), options.jmx());
+  }
+
+  /**
+   * ObjVlisp's bootstrap: make the four kernel entities, then tie the knots (StructuralMeta is its
+   * own instance; basicBehavioralMeta is its own behavioral meta), then start them.
+   */
+  static Kernel bootstrap(ActiveRuntime runtime, KernelOptions options) {
+    KernelImpl k = new KernelImpl(runtime, options);
+    List<String> structuralNames = List.copyOf(KernelBehaviors.STRUCTURAL.names());
+    k.structural = k.kernelMeta(STRUCTURAL_META, KernelBehaviors.STRUCTURAL, structuralNames);
+    k.entity = k.kernelMeta(ENTITY, KernelBehaviors.ENTITY, structuralNames);
+    k.behavioral = k.kernelMeta(BEHAVIORAL_META, KernelBehaviors.BEHAVIORAL, structuralNames);
+    k.structural.instanceOf(k.structural);
+    k.entity.instanceOf(k.structural);
+    k.behavioral.instanceOf(k.structural);
+    k.structural.inherit(k.entity);
+    k.behavioral.inherit(k.entity);
+    k.basic =
+        new BehavioralMetaImpl(
+            k,
+            BASIC_BEHAVIORAL_META,
+            k.behavioral,
+            k.servant(
+                KernelBehaviors.behavioral(BASIC_BEHAVIORAL_META), KernelBehaviors.BEHAVIORAL),
+            MetaPolicy.MODEL_ONLY,
+            Damping.none());
+    for (EntityImpl<FieldState> e : List.of(k.structural, k.entity, k.behavioral)) {
+      k.structural.adopt(e);
+    }
+    k.behavioral.adopt(k.basic);
+    for (EntityImpl<FieldState> e : List.of(k.structural, k.entity, k.behavioral, k.basic)) {
+      k.reserve(e.name());
+      e.start(KERNEL_OPTIONS.config());
+      k.register(e);
+    }
+    for (EntityImpl<FieldState> e : List.of(k.structural, k.entity, k.behavioral)) {
+      k.structural.describe(KernelBehaviors.NEW_INSTANCE, e.name());
+    }
+    k.behavioral.describe(KernelBehaviors.NEW_INSTANCE, k.basic.name());
+    for (EntityImpl<FieldState> e : List.of(k.structural, k.entity, k.behavioral, k.basic)) {
+      k.basic.addBaseLevelEntity(e).touch();
+      e.settle();
+    }
+    return k;
+  }
+
+  private StructuralMetaImpl<FieldState> kernelMeta(
+      String name, Behaviors<FieldState> ofInstances, List<String> ownBehaviorNames) {
+    StructuralMetaImpl.Makes makes =
+        switch (name) {
+          case STRUCTURAL_META -> StructuralMetaImpl.Makes.STRUCTURAL_METAS;
+          case BEHAVIORAL_META -> StructuralMetaImpl.Makes.BEHAVIORAL_METAS;
+          default -> StructuralMetaImpl.Makes.ENTITIES;
+        };
+    return new StructuralMetaImpl<>(
+        this,
+        name,
+        null,
+        servant(
+            KernelBehaviors.structural(name, List.copyOf(ofInstances.names())),
+            KernelBehaviors.STRUCTURAL),
+        FieldSpace.INSTANCE,
+        ofInstances,
+        null,
+        makes);
+  }
+
+  private EntityServant<FieldState> servant(FieldState initial, Behaviors<FieldState> behaviors) {
+    return new EntityServant<>(FieldSpace.INSTANCE.activate(initial, behaviors), KERNEL_OPTIONS);
+  }
+
+  @Override
+  public <S extends State> StructuralMeta<S> newStructuralMeta(
+      String name, StateSpace<S> space, Behaviors<S> behaviors) {
+    requireNonNull(space, "space");
+    requireNonNull(behaviors, "behaviors");
+    StructuralMetaImpl<FieldState> of = structural;
+    StructuralMetaImpl<FieldState> parent = entity;
+    StructuralMetaImpl<S> made =
+        of.instantiate(
+            name,
+            KernelBehaviors.structural(name, List.copyOf(behaviors.names())),
+            KERNEL_OPTIONS,
+            servant ->
+                new StructuralMetaImpl<>(
+                    this,
+                    name,
+                    of,
+                    servant,
+                    space,
+                    behaviors,
+                    parent,
+                    StructuralMetaImpl.Makes.ENTITIES));
+    basic.addBaseLevelEntity(made).touch();
+    made.settle();
+    return made;
+  }
+
+  @Override
+  public BehavioralMeta newBehavioralMeta(String name, MetaPolicy policy, Damping damping) {
+    requireNonNull(policy, "policy");
+    requireNonNull(damping, "damping");
+    StructuralMetaImpl<FieldState> of = behavioral;
+    BehavioralMetaImpl made =
+        of.instantiate(
+            name,
+            KernelBehaviors.behavioral(name),
+            KERNEL_OPTIONS,
+            servant -> new BehavioralMetaImpl(this, name, of, servant, policy, damping));
+    basic.addBaseLevelEntity(made).touch();
+    made.settle();
+    return made;
+  }
+
+  /** Takes a name for a new entity, or says why not. */
+  void reserve(String name) {
+    requireNonNull(name, "name");
+    if (closed) {
+      throw new IllegalStateException("the kernel is closed; no entity '" + name + "' made");
+    }
+    if (name.isBlank()) {
+      throw new IllegalArgumentException("an entity name must not be blank, was '" + name + "'");
+    }
+    if (!names.add(name)) {
+      throw new IllegalArgumentException(
+          "an entity named '" + name + "' exists already; expected a new name");
+    }
+  }
+
+  void register(EntityImpl<?> e) {
+    byAddress.put(e.address(), e);
+    byName.put(e.name(), e);
+    jmx.register(e);
+  }
+
+  /** {@code entity} as an entity of this kernel, or an exception saying what it is. */
+  EntityImpl<?> own(Entity entity) {
+    requireNonNull(entity, "entity");
+    if (entity instanceof EntityImpl<?> e && e.kernel == this) {
+      return e;
+    }
+    throw new IllegalArgumentException(
+        entity + " is not an entity of this kernel (runtime " + runtime.name() + ")");
+  }
+
+  BehavioralMetaImpl own(BehavioralMeta meta) {
+    if (own((Entity) meta) instanceof BehavioralMetaImpl b) {
+      return b;
+    }
+    throw new IllegalArgumentException(meta + " is not a behavioral meta of this kernel");
+  }
+
+  KernelOptions options() {
+    return options;
+  }
+
+  long nanoTime() {
+    return options.timeSource().nanoTime();
+  }
+
+  @Override
+  public ActiveRuntime runtime() {
+    return runtime;
+  }
+
+  @Override
+  public StructuralMeta<?> entity() {
+    return entity;
+  }
+
+  @Override
+  public StructuralMeta<?> structuralMeta() {
+    return structural;
+  }
+
+  @Override
+  public StructuralMeta<?> behavioralMeta() {
+    return behavioral;
+  }
+
+  @Override
+  public BehavioralMeta basicBehavioralMeta() {
+    return basic;
+  }
+
+  @Override
+  public Optional<Entity> lookupEntity(Address address) {
+    return Optional.ofNullable(byAddress.get(requireNonNull(address, "address")));
+  }
+
+  @Override
+  public Optional<Entity> lookupEntity(String name) {
+    return Optional.ofNullable(byName.get(requireNonNull(name, "name")));
+  }
+
+  @Override
+  public void close() {
+    if (closed) {
+      return;
+    }
+    closed = true;
+    for (EntityImpl<?> e : new ArrayList<>(byAddress.values())) {
+      e.object().stop();
+    }
+    jmx.close();
+  }
+}

@@ -1,0 +1,186 @@
+package org.armgals.kernel;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.Function;
+import java.util.function.UnaryOperator;
+import org.armgals.active.Future;
+import org.armgals.representation.Behavior;
+import org.armgals.representation.Behaviors;
+import org.armgals.representation.State;
+import org.armgals.representation.StateSpace;
+import org.jspecify.annotations.Nullable;
+
+/**
+ * A structural meta-entity: the space and the behaviors of its instances, and the instances
+ * themselves, which it harmonizes when the behaviors change.
+ *
+ * <p>The behaviors and the list of instances change under {@link #lock}, so that an instance made
+ * concurrently with a change either starts with the new behaviors or is harmonized with them.
+ */
+final class StructuralMetaImpl<S extends State> extends EntityImpl<FieldState>
+    implements StructuralMeta<S> {
+
+  /** What its instances are: plain entities, or meta-entities made by the kernel itself. */
+  enum Makes {
+    ENTITIES,
+    STRUCTURAL_METAS,
+    BEHAVIORAL_METAS
+  }
+
+  private final StateSpace<S> space;
+  private final Makes makes;
+  private final Object lock = new Object();
+  private final List<EntityImpl<S>> instances = new CopyOnWriteArrayList<>();
+  private volatile Behaviors<S> behaviors;
+  private @Nullable StructuralMetaImpl<?> superMeta;
+
+  StructuralMetaImpl(
+      KernelImpl kernel,
+      String name,
+      @Nullable StructuralMetaImpl<FieldState> meta,
+      EntityServant<FieldState> servant,
+      StateSpace<S> space,
+      Behaviors<S> behaviors,
+      @Nullable StructuralMetaImpl<?> superMeta,
+      Makes makes) {
+    super(kernel, name, meta, servant);
+    this.space = requireNonNull(space, "space");
+    this.behaviors = requireNonNull(behaviors, "behaviors");
+    this.superMeta = superMeta;
+    this.makes = makes;
+  }
+
+  /** Bootstrap only: {@code StructuralMeta} is made before {@code Entity}, which it extends. */
+  void inherit(StructuralMetaImpl<?> parent) {
+    this.superMeta = parent;
+  }
+
+  /** Bootstrap only: an instance made by hand. */
+  void adopt(EntityImpl<S> instance) {
+    synchronized (lock) {
+      instances.add(instance);
+    }
+  }
+
+  /**
+   * Makes, starts and registers an instance with the current behaviors, and describes it in this
+   * meta's own state.
+   */
+  <T extends EntityImpl<S>> T instantiate(
+      String name, S initial, EntityOptions options, Function<EntityServant<S>, T> maker) {
+    kernel.reserve(name);
+    T entity;
+    synchronized (lock) {
+      EntityServant<S> servant = new EntityServant<>(space.activate(initial, behaviors), options);
+      entity = maker.apply(servant);
+      entity.start(options.config());
+      instances.add(entity);
+    }
+    kernel.register(entity);
+    describe(KernelBehaviors.NEW_INSTANCE, name);
+    return entity;
+  }
+
+  @Override
+  public StateSpace<S> stateSpace() {
+    return space;
+  }
+
+  @Override
+  public Behaviors<S> behaviors() {
+    return behaviors;
+  }
+
+  @Override
+  public Optional<Behavior<S>> lookup(String behaviorName) {
+    return behaviors.lookup(requireNonNull(behaviorName, "name"));
+  }
+
+  @Override
+  public Future addBehavior(Behavior<S> behavior) {
+    requireNonNull(behavior, "behavior");
+    return object()
+        .signal(
+            own -> {
+              change(b -> b.with(behavior));
+              own.call(KernelBehaviors.ADD_BEHAVIOR, behavior.name());
+            });
+  }
+
+  @Override
+  public Future deleteBehavior(String behaviorName) {
+    requireNonNull(behaviorName, "name");
+    return object()
+        .signal(
+            own -> {
+              change(b -> b.without(behaviorName));
+              own.call(KernelBehaviors.DELETE_BEHAVIOR, behaviorName);
+            });
+  }
+
+  /** Flows 4 and 5: replaces the behaviors and harmonizes every instance; on this object. */
+  private void change(UnaryOperator<Behaviors<S>> how) {
+    synchronized (lock) {
+      Behaviors<S> next = how.apply(behaviors);
+      behaviors = next;
+      for (EntityImpl<S> instance : instances) {
+        if (!instance.isStopped()) {
+          instance.object().send(s -> s.harmonize(next));
+        }
+      }
+    }
+  }
+
+  @Override
+  public S getInitialState() {
+    return space.initialState();
+  }
+
+  @Override
+  public Set<S> mapToState(Map<String, ?> observation, @Nullable S current) {
+    return space.mapToState(requireNonNull(observation, "observation"), current);
+  }
+
+  @Override
+  public Optional<StructuralMeta<?>> superMeta() {
+    return Optional.ofNullable(superMeta);
+  }
+
+  @Override
+  public List<Entity> instances() {
+    return List.copyOf(instances);
+  }
+
+  @Override
+  public Entity newEntity(String entityName, BehavioralMeta meta) {
+    return newEntity(entityName, meta, EntityOptions.defaults());
+  }
+
+  @Override
+  public Entity newEntity(String entityName, BehavioralMeta meta, EntityOptions options) {
+    requireNonNull(options, "options");
+    BehavioralMetaImpl m = kernel.own(meta);
+    if (makes != Makes.ENTITIES) {
+      throw new UnsupportedOperationException(
+          name()
+              + " makes "
+              + makes.name().toLowerCase(java.util.Locale.ROOT)
+              + "; use Kernel.newStructuralMeta or Kernel.newBehavioralMeta");
+    }
+    PlainEntity<S> e =
+        instantiate(
+            entityName,
+            space.initialState(),
+            options,
+            servant -> new PlainEntity<>(kernel, entityName, this, servant));
+    m.addBaseLevelEntity(e).touch();
+    e.settle();
+    return e;
+  }
+}

@@ -1,0 +1,20 @@
+package org.armgals.kernel.spi;
+
+import org.armgals.kernel.Notification;
+
+/**
+ * What a behavioral meta-entity does with the notifications of its base entities that pass their
+ * filters: reason on its models and adapt (paper §2.3: "the model is defined by necessity").
+ *
+ * <p>Threading: called on the meta-entity's own object, one notification at a time, after the
+ * notification has been integrated in the model; must not block.
+ */
+@FunctionalInterface
+public interface MetaPolicy {
+
+  /** A policy that only keeps models. */
+  MetaPolicy MODEL_ONLY = (context, notification) -> {};
+
+  /** {@code notification} passed its entity's filter. */
+  void onNotification(MetaContext context, Notification notification) throws Exception;
+}

@@ -1,0 +1,222 @@
+package org.armgals.representation.sc;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.Collections;
+import java.util.Comparator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeSet;
+import org.jspecify.annotations.Nullable;
+
+/** The state tree of a definition, checked and indexed, with document order and depth. */
+final class Chart {
+
+  /** A node of the tree; the root stands for the {@code <scxml>} element and is never active. */
+  static final class Node {
+    final String id;
+    final ScNode.Kind kind;
+    final @Nullable Node parent;
+    final int order;
+    final int depth;
+    final List<ScAction> onEntry;
+    final List<ScAction> onExit;
+    final List<Node> children = new ArrayList<>();
+    final List<Node> initial = new ArrayList<>();
+    final List<Node> historyDefault = new ArrayList<>();
+
+    Node(String id, ScNode.Kind kind, @Nullable Node parent, int order, ScNode source) {
+      this.id = id;
+      this.kind = kind;
+      this.parent = parent;
+      this.order = order;
+      this.depth = parent == null ? 0 : parent.depth + 1;
+      this.onEntry = source.onEntry();
+      this.onExit = source.onExit();
+    }
+
+    boolean isHistory() {
+      return kind.isHistory();
+    }
+
+    boolean isParallel() {
+      return kind == ScNode.Kind.PARALLEL;
+    }
+
+    boolean isFinal() {
+      return kind == ScNode.Kind.FINAL;
+    }
+
+    /** A compound state or the root: one active child at a time. */
+    boolean isCompound() {
+      return kind == ScNode.Kind.STATE && !stateChildren().isEmpty();
+    }
+
+    boolean isAtomic() {
+      return kind == ScNode.Kind.FINAL || (kind == ScNode.Kind.STATE && stateChildren().isEmpty());
+    }
+
+    List<Node> stateChildren() {
+      return children.stream().filter(c -> !c.isHistory()).toList();
+    }
+
+    List<Node> historyChildren() {
+      return children.stream().filter(Node::isHistory).toList();
+    }
+
+    /** Whether this node is a proper descendant of {@code ancestor}. */
+    boolean isDescendantOf(Node ancestor) {
+      for (Node p = parent; p != null; p = p.parent) {
+        if (p == ancestor) {
+          return true;
+        }
+      }
+      return false;
+    }
+
+    /** The proper ancestors of this node, nearest first, up to (not including) {@code stop}. */
+    List<Node> ancestorsUpTo(@Nullable Node stop) {
+      List<Node> result = new ArrayList<>();
+      for (Node p = parent; p != null && p != stop; p = p.parent) {
+        result.add(p);
+      }
+      return result;
+    }
+
+    @Override
+    public String toString() {
+      return id;
+    }
+  }
+
+  static final Comparator<Node> DOCUMENT_ORDER = Comparator.comparingInt(n -> n.order);
+
+  final Node root;
+  final Map<String, Node> byId;
+  final List<Node> histories;
+
+  /**
+   * @throws IllegalArgumentException if ids repeat, or an initial or history default does not name
+   *     a descendant of its state (of its parent, for a history)
+   */
+  Chart(ScDefinition definition) {
+    requireNonNull(definition, "definition");
+    if (definition.states().isEmpty()) {
+      throw new IllegalArgumentException(
+          "chart '" + definition.name() + "' has no state; expected at least one");
+    }
+    ScNode top =
+        new ScNode(
+            "scxml",
+            ScNode.Kind.STATE,
+            definition.initial(),
+            List.of(),
+            List.of(),
+            List.of(),
+            definition.states());
+    Map<String, Node> index = new LinkedHashMap<>();
+    Map<Node, ScNode> sources = new LinkedHashMap<>();
+    this.root = new Node("(root)", ScNode.Kind.STATE, null, 0, top);
+    sources.put(root, top);
+    int[] order = {1};
+    for (ScNode child : top.children()) {
+      add(child, root, index, sources, order);
+    }
+    this.byId = Collections.unmodifiableMap(index);
+    for (Map.Entry<Node, ScNode> e : sources.entrySet()) {
+      resolve(e.getKey(), e.getValue());
+    }
+    this.histories = index.values().stream().filter(Node::isHistory).toList();
+  }
+
+  private static void add(
+      ScNode source, Node parent, Map<String, Node> index, Map<Node, ScNode> sources, int[] order) {
+    Node node = new Node(source.id(), source.kind(), parent, order[0]++, source);
+    if (index.putIfAbsent(node.id, node) != null) {
+      throw new IllegalArgumentException("state id '" + node.id + "' is used twice");
+    }
+    parent.children.add(node);
+    sources.put(node, source);
+    for (ScNode child : source.children()) {
+      add(child, node, index, sources, order);
+    }
+  }
+
+  private void resolve(Node node, ScNode source) {
+    if (node.isCompound()) {
+      String initial = source.initial();
+      Node target = initial == null ? node.stateChildren().get(0) : node(initial, "initial");
+      if (target.isHistory() || !target.isDescendantOf(node)) {
+        throw new IllegalArgumentException(
+            "initial '" + initial + "' of '" + node.id + "' is not a state inside it");
+      }
+      node.initial.add(target);
+    }
+    if (node.isHistory()) {
+      // Parents come before their children in the map, so the parent's initial is resolved.
+      Node parent = requireNonNull(node.parent);
+      if (parent == root) {
+        throw new IllegalArgumentException(
+            "history '" + node.id + "' is at the top level; expected it inside a state");
+      }
+      for (String id : source.historyDefault()) {
+        Node target = node(id, "history default");
+        if (target.isHistory() || !target.isDescendantOf(parent)) {
+          throw new IllegalArgumentException(
+              "history default '"
+                  + id
+                  + "' of '"
+                  + node.id
+                  + "' is not a state inside '"
+                  + parent.id
+                  + "'");
+        }
+        node.historyDefault.add(target);
+      }
+      if (node.historyDefault.isEmpty()) {
+        if (parent.isParallel()) {
+          node.historyDefault.addAll(parent.stateChildren());
+        } else if (parent.isCompound()) {
+          node.historyDefault.addAll(parent.initial);
+        } else {
+          throw new IllegalArgumentException(
+              "history '"
+                  + node.id
+                  + "' is in '"
+                  + parent.id
+                  + "', which has no state to remember");
+        }
+      }
+    }
+  }
+
+  /** The node {@code id}; {@code what} says what named it, for the message. */
+  Node node(String id, String what) {
+    Node n = byId.get(requireNonNull(id, what));
+    if (n == null) {
+      throw new IllegalArgumentException(
+          what + " '" + id + "' is not a state of the chart; states: " + byId.keySet());
+    }
+    return n;
+  }
+
+  /** The nodes of {@code ids}, in document order. */
+  TreeSet<Node> nodes(Collection<String> ids, String what) {
+    TreeSet<Node> result = new TreeSet<>(DOCUMENT_ORDER);
+    for (String id : ids) {
+      result.add(node(id, what));
+    }
+    return result;
+  }
+
+  static List<String> ids(Collection<Node> nodes) {
+    List<String> ids = new ArrayList<>(nodes.size());
+    for (Node n : nodes) {
+      ids.add(n.id);
+    }
+    return ids;
+  }
+}

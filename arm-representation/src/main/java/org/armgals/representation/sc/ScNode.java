@@ -1,0 +1,132 @@
+package org.armgals.representation.sc;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.Arrays;
+import java.util.List;
+import org.jspecify.annotations.Nullable;
+
+/**
+ * A state of a statechart definition ({@code <state>}, {@code <parallel>}, {@code <final>} or
+ * {@code <history>} in SCXML) with its children.
+ *
+ * <p>A {@link Kind#STATE} with state children is compound: it enters {@link #initial()} (its first
+ * child when null) by default; without them it is atomic. A {@link Kind#PARALLEL} has orthogonal
+ * regions, all active together. A history pseudo-state remembers the active children ({@link
+ * Kind#SHALLOW_HISTORY}) or atomic descendants ({@link Kind#DEEP_HISTORY}) of its parent when the
+ * parent is exited; a transition to it restores them, or enters {@link #historyDefault()} (its
+ * parent's initial state when empty) the first time.
+ *
+ * @param id unique in the chart
+ * @param kind what the node is
+ * @param initial for a compound state, the descendant entered by default; null for its first child
+ * @param onEntry actions on entry, in order
+ * @param onExit actions on exit, in order
+ * @param historyDefault for a history pseudo-state, where it leads before anything is remembered
+ * @param children sub-states and history pseudo-states, in document order
+ */
+public record ScNode(
+    String id,
+    Kind kind,
+    @Nullable String initial,
+    List<ScAction> onEntry,
+    List<ScAction> onExit,
+    List<String> historyDefault,
+    List<ScNode> children) {
+
+  /** What a node is. */
+  public enum Kind {
+    /** An atomic state, or a compound one when it has state children. */
+    STATE,
+    /** A state whose children are orthogonal regions. */
+    PARALLEL,
+    /** A final state: entering it completes its parent. */
+    FINAL,
+    /** Remembers the active children of its parent. */
+    SHALLOW_HISTORY,
+    /** Remembers the active atomic descendants of its parent. */
+    DEEP_HISTORY;
+
+    /** Whether this kind is a history pseudo-state. */
+    public boolean isHistory() {
+      return this == SHALLOW_HISTORY || this == DEEP_HISTORY;
+    }
+  }
+
+  /**
+   * Checks the node.
+   *
+   * @throws IllegalArgumentException if the id is not a name, or the node has parts its kind does
+   *     not allow (children of a final or history, an initial on a non-compound state, actions on a
+   *     history, a history default on a state)
+   */
+  public ScNode {
+    ScNames.requireName(id, "state id");
+    requireNonNull(kind, "kind");
+    onEntry = List.copyOf(requireNonNull(onEntry, "onEntry"));
+    onExit = List.copyOf(requireNonNull(onExit, "onExit"));
+    historyDefault = ScNames.requireNames(historyDefault, "history default of '" + id + "'");
+    children = List.copyOf(requireNonNull(children, "children"));
+    if ((kind == Kind.FINAL || kind.isHistory()) && !children.isEmpty()) {
+      throw new IllegalArgumentException(kind + " '" + id + "' has children; expected none");
+    }
+    if (kind.isHistory() && !(onEntry.isEmpty() && onExit.isEmpty())) {
+      throw new IllegalArgumentException("history '" + id + "' has actions; expected none");
+    }
+    if (!kind.isHistory() && !historyDefault.isEmpty()) {
+      throw new IllegalArgumentException(
+          kind + " '" + id + "' has a history default; only a history has one");
+    }
+    if (initial != null) {
+      ScNames.requireName(initial, "initial of '" + id + "'");
+      if (kind != Kind.STATE || children.stream().allMatch(c -> c.kind().isHistory())) {
+        throw new IllegalArgumentException(
+            kind + " '" + id + "' has initial '" + initial + "'; only a compound state has one");
+      }
+    }
+  }
+
+  /** A state: atomic without children, compound with them. */
+  public static ScNode state(String id, ScNode... children) {
+    return new ScNode(
+        id, Kind.STATE, null, List.of(), List.of(), List.of(), Arrays.asList(children));
+  }
+
+  /** A parallel state whose children are its regions. */
+  public static ScNode parallel(String id, ScNode... regions) {
+    return new ScNode(
+        id, Kind.PARALLEL, null, List.of(), List.of(), List.of(), Arrays.asList(regions));
+  }
+
+  /** A final state. */
+  public static ScNode finalState(String id) {
+    return new ScNode(id, Kind.FINAL, null, List.of(), List.of(), List.of(), List.of());
+  }
+
+  /** A history pseudo-state, deep or shallow, leading to {@code defaults} the first time. */
+  public static ScNode history(String id, boolean deep, String... defaults) {
+    return new ScNode(
+        id,
+        deep ? Kind.DEEP_HISTORY : Kind.SHALLOW_HISTORY,
+        null,
+        List.of(),
+        List.of(),
+        Arrays.asList(defaults),
+        List.of());
+  }
+
+  /** This node with {@code initial} as its default descendant. */
+  public ScNode withInitial(String initial) {
+    return new ScNode(id, kind, initial, onEntry, onExit, historyDefault, children);
+  }
+
+  /** This node with {@code actions} on entry. */
+  public ScNode onEntry(ScAction... actions) {
+    return new ScNode(id, kind, initial, Arrays.asList(actions), onExit, historyDefault, children);
+  }
+
+  /** This node with {@code actions} on exit. */
+  public ScNode onExit(ScAction... actions) {
+    return new ScNode(id, kind, initial, onEntry, Arrays.asList(actions), historyDefault, children);
+  }
+}

@@ -1,0 +1,165 @@
+package org.armgals.representation.sc;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+/** Writes a definition as SCXML; see {@link Scxml}. */
+final class ScxmlWriter {
+  private final StringBuilder out = new StringBuilder();
+  private final Map<String, List<ScTransition>> bySource = new LinkedHashMap<>();
+
+  private ScxmlWriter(ScDefinition definition) {
+    for (ScTransition t : definition.transitions()) {
+      bySource.computeIfAbsent(t.source(), s -> new ArrayList<>()).add(t);
+    }
+  }
+
+  static String write(ScDefinition definition) {
+    ScxmlWriter w = new ScxmlWriter(definition);
+    Set<String> ids = new LinkedHashSet<>();
+    for (ScNode n : definition.states()) {
+      collect(n, ids);
+    }
+    for (String source : w.bySource.keySet()) {
+      if (!ids.contains(source)) {
+        throw new IllegalArgumentException(
+            "transition '"
+                + w.bySource.get(source).get(0).id()
+                + "' leaves '"
+                + source
+                + "', which is not a state of the definition");
+      }
+    }
+    w.out.append("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    w.out
+        .append("<scxml xmlns=\"")
+        .append(Scxml.NAMESPACE)
+        .append("\" xmlns:arm=\"")
+        .append(Scxml.ARM_NAMESPACE)
+        .append("\" version=\"1.0\" name=\"")
+        .append(escape(definition.name()))
+        .append('"');
+    if (definition.initial() != null) {
+      w.out.append(" initial=\"").append(escape(definition.initial())).append('"');
+    }
+    w.out.append(">\n");
+    for (ScNode n : definition.states()) {
+      w.node(n, 1);
+    }
+    w.out.append("</scxml>\n");
+    return w.out.toString();
+  }
+
+  private static void collect(ScNode node, Set<String> ids) {
+    ids.add(node.id());
+    for (ScNode child : node.children()) {
+      collect(child, ids);
+    }
+  }
+
+  private void node(ScNode node, int depth) {
+    String tag =
+        switch (node.kind()) {
+          case STATE -> "state";
+          case PARALLEL -> "parallel";
+          case FINAL -> "final";
+          case SHALLOW_HISTORY, DEEP_HISTORY -> "history";
+        };
+    indent(depth).append('<').append(tag).append(" id=\"").append(escape(node.id())).append('"');
+    if (node.initial() != null) {
+      out.append(" initial=\"").append(escape(node.initial())).append('"');
+    }
+    if (node.kind() == ScNode.Kind.DEEP_HISTORY) {
+      out.append(" type=\"deep\"");
+    }
+    List<ScTransition> transitions = bySource.getOrDefault(node.id(), List.of());
+    boolean empty =
+        node.onEntry().isEmpty()
+            && node.onExit().isEmpty()
+            && node.historyDefault().isEmpty()
+            && node.children().isEmpty()
+            && transitions.isEmpty();
+    if (empty) {
+      out.append("/>\n");
+      return;
+    }
+    out.append(">\n");
+    content("onentry", node.onEntry(), depth + 1);
+    content("onexit", node.onExit(), depth + 1);
+    if (!node.historyDefault().isEmpty()) {
+      indent(depth + 1)
+          .append("<transition target=\"")
+          .append(escape(String.join(" ", node.historyDefault())))
+          .append("\"/>\n");
+    }
+    for (int i = 0; i < transitions.size(); i++) {
+      transition(transitions.get(i), i + 1, depth + 1);
+    }
+    for (ScNode child : node.children()) {
+      node(child, depth + 1);
+    }
+    indent(depth).append("</").append(tag).append(">\n");
+  }
+
+  private void transition(ScTransition t, int n, int depth) {
+    indent(depth).append("<transition");
+    if (!t.events().isEmpty()) {
+      out.append(" event=\"").append(escape(String.join(" ", t.events()))).append('"');
+    }
+    if (t.cond() != null) {
+      out.append(" cond=\"").append(escape(t.cond())).append('"');
+    }
+    if (!t.targets().isEmpty()) {
+      out.append(" target=\"").append(escape(String.join(" ", t.targets()))).append('"');
+    }
+    if (t.internal()) {
+      out.append(" type=\"internal\"");
+    }
+    if (!t.id().equals(Scxml.defaultTransitionId(t.source(), n))) {
+      out.append(" arm:id=\"").append(escape(t.id())).append('"');
+    }
+    if (t.actions().isEmpty()) {
+      out.append("/>\n");
+      return;
+    }
+    out.append(">\n");
+    actions(t.actions(), depth + 1);
+    indent(depth).append("</transition>\n");
+  }
+
+  private void content(String tag, List<ScAction> actions, int depth) {
+    if (actions.isEmpty()) {
+      return;
+    }
+    indent(depth).append('<').append(tag).append(">\n");
+    actions(actions, depth + 1);
+    indent(depth).append("</").append(tag).append(">\n");
+  }
+
+  private void actions(List<ScAction> actions, int depth) {
+    for (ScAction a : actions) {
+      switch (a) {
+        case ScAction.Run r ->
+            indent(depth).append("<arm:action name=\"").append(escape(r.name())).append("\"/>\n");
+        case ScAction.Raise r ->
+            indent(depth).append("<raise event=\"").append(escape(r.event())).append("\"/>\n");
+      }
+    }
+  }
+
+  private StringBuilder indent(int depth) {
+    return out.append("  ".repeat(depth));
+  }
+
+  private static String escape(String s) {
+    return s.replace("&", "&amp;")
+        .replace("<", "&lt;")
+        .replace(">", "&gt;")
+        .replace("\"", "&quot;")
+        .replace("'", "&apos;");
+  }
+}

@@ -1,0 +1,69 @@
+package org.armgals.representation.sc;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.List;
+import java.util.Map;
+import org.armgals.representation.Behavior;
+import org.armgals.representation.Behaviors;
+import org.armgals.representation.StateSpace;
+
+/**
+ * A statechart as a state space: its states are {@link Configuration}s, its behaviors are its
+ * transitions, and {@link org.armgals.representation.Activation#dispatch} runs one
+ * run-to-completion step (docs/representations.md says which semantics exactly).
+ *
+ * <p>{@link #mapToState} reads {@code active} (any ids, coarse or fine: the answer is every legal
+ * configuration in which they are all active) and {@code history.<id>} entries; history left out of
+ * the observation is taken from the current state, or is empty without one.
+ *
+ * <p>Immutable and thread-safe, given thread-safe guards.
+ */
+public interface Statechart extends StateSpace<Configuration> {
+
+  /**
+   * The chart of {@code definition}, whose {@code cond}s name guards of {@code guards} (or are
+   * {@code In(stateId)}).
+   *
+   * @throws IllegalArgumentException if the definition does not hold together (an id used twice, an
+   *     initial or target naming no state, a guard with no function), with the culprit named
+   */
+  static Statechart of(ScDefinition definition, Map<String, Guard> guards) {
+    return new StatechartImpl(
+        requireNonNull(definition, "definition"), requireNonNull(guards, "guards"));
+  }
+
+  /** The chart of {@code definition}, which may use no guard but {@code In(stateId)}. */
+  static Statechart of(ScDefinition definition) {
+    return of(definition, Map.of());
+  }
+
+  /** The definition the chart was built from. */
+  ScDefinition definition();
+
+  /** The definition's transitions, bound to this chart, in document order. */
+  Behaviors<Configuration> transitions();
+
+  /**
+   * {@code transition} as a behavior of this chart, to add to its behaviors at run time.
+   *
+   * @throws IllegalArgumentException if its source, a target or its guard is not the chart's
+   */
+  Behavior<Configuration> bind(ScTransition transition);
+
+  /** The actions entering the initial configuration runs, which the entity runs when it starts. */
+  List<String> initialActions();
+
+  /**
+   * A coarse observation of {@code configuration}: the active states no deeper than {@code depth}
+   * (top-level states are at depth 1), without history. {@link Configuration#observe()} is the
+   * finest.
+   *
+   * @throws IllegalArgumentException if {@code depth} is below 1, or the configuration is not the
+   *     chart's
+   */
+  Map<String, Object> observe(Configuration configuration, int depth);
+
+  /** Whether a top-level final state is active: no transition is taken any more. */
+  boolean isFinished(Configuration configuration);
+}
