@@ -4,8 +4,14 @@ import static java.util.Objects.requireNonNull;
 
 import java.time.Duration;
 import java.util.List;
+import java.util.concurrent.CompletionStage;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.TimeSource;
+import org.armgals.kernel.AdaptationPoint;
+import org.armgals.kernel.BehavioralMeta;
+import org.armgals.kernel.Entity;
+import org.armgals.kernel.NotificationPolicy;
+import org.armgals.kernel.StructuralMeta;
 
 /**
  * A synchronous island (paper §5.2, GALS): reactive entities released together once per period. At
@@ -40,7 +46,13 @@ public interface Island extends AutoCloseable {
   /** The time between two releases. */
   Duration period();
 
-  /** Where in a cycle adaptation requests are applied. */
+  /**
+   * Where in a cycle adaptation requests are applied: {@link AdaptationPoint#BEGIN_OF_CYCLE} (right
+   * after the release, before the entities react: a request made before instant {@code k} shapes
+   * the reactions of {@code k}; priority to adaptation) or {@link AdaptationPoint#END_OF_CYCLE}
+   * (after every entity has reacted: it shapes {@code k + 1}; priority to the deadline). Either way
+   * no entity runs while requests are applied.
+   */
   AdaptationPoint adaptationPoint();
 
   /** What a real-time run does after an overrun. */
@@ -54,6 +66,25 @@ public interface Island extends AutoCloseable {
    * @throws IllegalStateException the island is closed
    */
   <S> ReactiveEntity<S> spawn(String name, S state, Reaction<S> main);
+
+  /**
+   * Creates a kernel entity of {@code kind} in the synchronous mode on this island (paper §5.3,
+   * figure 8: a base-level entity released by the island's clock): it takes the stimuli waiting at
+   * each release, and applies the adaptation requests of its behavioral meta at the island's {@link
+   * #adaptationPoint()}. It belongs to its kernel ({@link StructuralMeta#instances()}), not to
+   * {@link #entities()}: the kernel stops it; once the island is closed it is no longer released.
+   *
+   * <p>The kernel hands out a new entity only once its object has processed a first event, which a
+   * synchronous object does at a release: the stage completes after the island's next release (the
+   * next {@link #step()}, or within a period once started). Until then the kernel is making it on a
+   * virtual thread of its own.
+   *
+   * @return completes with the entity, or exceptionally with the kernel's refusal (a blank or taken
+   *     name)
+   * @throws IllegalStateException the island is closed
+   */
+  CompletionStage<Entity> spawn(
+      StructuralMeta<?> kind, String name, BehavioralMeta meta, NotificationPolicy notification);
 
   /** Its entities, in the order they were spawned. */
   List<ReactiveEntity<?>> entities();
@@ -124,9 +155,20 @@ public interface Island extends AutoCloseable {
       return this;
     }
 
-    /** Where adaptation requests are applied; default {@link AdaptationPoint#BEGIN_OF_CYCLE}. */
+    /**
+     * Where adaptation requests are applied; default {@link AdaptationPoint#BEGIN_OF_CYCLE}.
+     *
+     * @throws IllegalArgumentException {@link AdaptationPoint#ON_ARRIVAL}: an island adapts only
+     *     between instants
+     */
     public Builder adaptationPoint(AdaptationPoint adaptationPoint) {
-      this.adaptationPoint = requireNonNull(adaptationPoint, "adaptationPoint");
+      requireNonNull(adaptationPoint, "adaptationPoint");
+      if (adaptationPoint == AdaptationPoint.ON_ARRIVAL) {
+        throw new IllegalArgumentException(
+            "adaptation point of an island must be BEGIN_OF_CYCLE or END_OF_CYCLE, was "
+                + adaptationPoint);
+      }
+      this.adaptationPoint = adaptationPoint;
       return this;
     }
 

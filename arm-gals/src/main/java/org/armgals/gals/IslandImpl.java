@@ -4,6 +4,8 @@ import static java.util.Objects.requireNonNull;
 
 import java.time.Duration;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionStage;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.LockSupport;
@@ -15,6 +17,12 @@ import org.armgals.active.Clock;
 import org.armgals.active.ManualClock;
 import org.armgals.active.ObjectConfig;
 import org.armgals.active.TimeSource;
+import org.armgals.kernel.AdaptationPoint;
+import org.armgals.kernel.BehavioralMeta;
+import org.armgals.kernel.Entity;
+import org.armgals.kernel.EntityOptions;
+import org.armgals.kernel.NotificationPolicy;
+import org.armgals.kernel.StructuralMeta;
 import org.jspecify.annotations.Nullable;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -103,6 +111,32 @@ final class IslandImpl implements Island {
       entities.add(entity);
       return entity;
     }
+  }
+
+  @Override
+  public CompletionStage<Entity> spawn(
+      StructuralMeta<?> kind, String name, BehavioralMeta meta, NotificationPolicy notification) {
+    requireNonNull(kind, "kind");
+    requireNonNull(name, "name");
+    requireNonNull(meta, "meta");
+    requireNonNull(notification, "notification");
+    if (closed) {
+      throw new IllegalStateException("island " + this.name + " is closed");
+    }
+    EntityOptions options = new EntityOptions(config, notification, adaptationPoint);
+    CompletableFuture<Entity> made = new CompletableFuture<>();
+    // newEntity waits until the entity's object has processed a first event: at a release
+    Thread.ofVirtual()
+        .name("armgals-island-" + this.name + "-spawn-" + name)
+        .start(
+            () -> {
+              try {
+                made.complete(kind.newEntity(name, meta, options));
+              } catch (RuntimeException e) {
+                made.completeExceptionally(e);
+              }
+            });
+    return made;
   }
 
   @Override

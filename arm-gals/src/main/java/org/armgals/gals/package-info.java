@@ -8,7 +8,7 @@
  * from {@code k + 1}, in its own island or in another one (at that island's next release). Futures
  * between entities are events too ({@link org.armgals.gals.AwaitedValue}: active wait, time-outs,
  * cancelled with the reaction that awaits them). Adaptation requests are applied between instants,
- * at the {@link org.armgals.gals.AdaptationPoint} the island was built with, and their time is
+ * at the {@link org.armgals.kernel.AdaptationPoint} the island was built with, and their time is
  * counted in the cycle's budget. An island is stepped by hand ({@link
  * org.armgals.gals.Island#step()}, deterministic: same inputs, same per-cycle trace hash, whatever
  * the number of workers) or paced by a real-time runner with an {@link

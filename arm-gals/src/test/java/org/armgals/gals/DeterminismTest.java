@@ -6,6 +6,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import org.armgals.active.ActiveRuntime;
+import org.armgals.kernel.AdaptationPoint;
 import org.junit.jupiter.api.Test;
 
 /**
