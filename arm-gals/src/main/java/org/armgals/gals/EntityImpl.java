@@ -83,7 +83,7 @@ final class EntityImpl<S> implements ReactiveEntity<S>, EventProcessor, Reactive
   public void send(Object payload) {
     requireNonNull(payload, "payload");
     Address sender = ActiveContext.current().map(ActiveObject::address).orElse(null);
-    object().send(new Stimulus(sender, address(), payload));
+    object().send(new Emission(sender, address(), payload));
   }
 
   @Override
@@ -97,7 +97,7 @@ final class EntityImpl<S> implements ReactiveEntity<S>, EventProcessor, Reactive
     requireNonNull(name, "name");
     requireNonNull(reaction, "reaction");
     island.request(
-        new Adaptation(
+        new PendingAdaptation(
             this,
             "addReaction " + name,
             () -> {
@@ -111,7 +111,7 @@ final class EntityImpl<S> implements ReactiveEntity<S>, EventProcessor, Reactive
   public void removeReaction(String name) {
     requireNonNull(name, "name");
     island.request(
-        new Adaptation(
+        new PendingAdaptation(
             this,
             "removeReaction " + name,
             () -> {
@@ -128,7 +128,7 @@ final class EntityImpl<S> implements ReactiveEntity<S>, EventProcessor, Reactive
   public void adapt(String description, Consumer<? super S> change) {
     requireNonNull(description, "description");
     requireNonNull(change, "change");
-    island.request(new Adaptation(this, description, () -> change.accept(state)));
+    island.request(new PendingAdaptation(this, description, () -> change.accept(state)));
   }
 
   @Override
@@ -152,7 +152,7 @@ final class EntityImpl<S> implements ReactiveEntity<S>, EventProcessor, Reactive
   @Override
   public void process(Event event) {
     switch (event) {
-      case Stimulus s -> inbox.add(s.payload());
+      case Emission s -> inbox.add(s.payload());
       case FutureEvent f -> {
         // its SynchronousFutureValue is done now; Pending reads it at the next onCycle
       }
@@ -233,7 +233,7 @@ final class EntityImpl<S> implements ReactiveEntity<S>, EventProcessor, Reactive
       requireNonNull(target, "target");
       requireNonNull(payload, "payload");
       EntityImpl<?> t = (EntityImpl<?>) target;
-      t.object().send(new Stimulus(address(), t.address(), payload));
+      t.object().send(new Emission(address(), t.address(), payload));
     }
 
     @Override

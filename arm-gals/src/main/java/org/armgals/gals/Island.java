@@ -142,6 +142,7 @@ public interface Island extends AutoCloseable {
     OverrunPolicy overrunPolicy = OverrunPolicy.SKIP;
     TimeSource timeSource = TimeSource.system();
     boolean tracing;
+    boolean jmx = true;
     int capacity = 1 << 12;
 
     Builder(String name, ActiveRuntime runtime) {
@@ -190,6 +191,15 @@ public interface Island extends AutoCloseable {
     /** Whether to keep the per-cycle trace and its hash; default off (it costs). */
     public Builder tracing(boolean tracing) {
       this.tracing = tracing;
+      return this;
+    }
+
+    /**
+     * Whether to publish the island's figures over JMX ({@link IslandMXBean}) while it is open;
+     * default on.
+     */
+    public Builder jmx(boolean jmx) {
+      this.jmx = jmx;
       return this;
     }
 

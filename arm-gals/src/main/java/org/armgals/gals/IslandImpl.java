@@ -10,6 +10,7 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
+import javax.management.ObjectName;
 import org.armgals.active.ActiveContext;
 import org.armgals.active.ActiveObject;
 import org.armgals.active.ActiveRuntime;
@@ -48,8 +49,9 @@ final class IslandImpl implements Island {
   private final StatsRecorder stats;
   private final Trace trace;
   private final CopyOnWriteArrayList<EntityImpl<?>> entities = new CopyOnWriteArrayList<>();
-  private final ConcurrentLinkedQueue<Adaptation> requests = new ConcurrentLinkedQueue<>();
+  private final ConcurrentLinkedQueue<PendingAdaptation> requests = new ConcurrentLinkedQueue<>();
   private final ReentrantLock cycling = new ReentrantLock();
+  private final @Nullable ObjectName mbean;
   private volatile boolean closed;
   private @Nullable Thread runner;
 
@@ -66,6 +68,7 @@ final class IslandImpl implements Island {
     this.config = ObjectConfig.synchronous(clock).withCapacity(b.capacity);
     this.stats = new StatsRecorder(periodNanos);
     this.trace = new Trace(b.tracing);
+    this.mbean = b.jmx ? IslandJmx.register(this, runtime.name()) : null;
   }
 
   @Override
@@ -210,7 +213,7 @@ final class IslandImpl implements Island {
     int n = requests.size(); // those made before this point; later ones wait for the next
     int applied = 0;
     for (int i = 0; i < n; i++) {
-      Adaptation a = requests.poll();
+      PendingAdaptation a = requests.poll();
       if (a == null) {
         break;
       }
@@ -225,7 +228,7 @@ final class IslandImpl implements Island {
     return applied;
   }
 
-  void request(Adaptation adaptation) {
+  void request(PendingAdaptation adaptation) {
     if (closed) {
       throw new IllegalStateException("island " + name + " is closed");
     }
@@ -345,6 +348,7 @@ final class IslandImpl implements Island {
         }
       }
       clock.close();
+      IslandJmx.unregister(mbean, name);
     } finally {
       cycling.unlock();
     }

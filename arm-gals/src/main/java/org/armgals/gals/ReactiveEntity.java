@@ -11,8 +11,8 @@ import org.jspecify.annotations.Nullable;
  * A reactive entity (paper §5.3): a state and named {@link Reaction reactions}, run as a
  * synchronous active object released by its {@link Island}. Made by {@link Island#spawn}.
  *
- * <p>Adaptation: {@link #addReaction}, {@link #removeReaction} and {@link #adapt} are requests.
- * They return at once and are applied by the island between two instants, at its {@link
+ * <p>PendingAdaptation: {@link #addReaction}, {@link #removeReaction} and {@link #adapt} are
+ * requests. They return at once and are applied by the island between two instants, at its {@link
  * AdaptationPoint}, in the order they were made, never while the entity reacts.
  *
  * <p>Threading: every method may be called from any thread.

@@ -1,4 +1,4 @@
 package org.armgals.gals;
 
 /** An adaptation request waiting for its island's adaptation point. */
-record Adaptation(EntityImpl<?> entity, String description, Runnable change) {}
+record PendingAdaptation(EntityImpl<?> entity, String description, Runnable change) {}

@@ -7,8 +7,8 @@ import org.armgals.active.Event;
 import org.jspecify.annotations.Nullable;
 
 /** A payload sent to a reactive entity, by another entity or from outside any. */
-record Stimulus(@Nullable Address sender, Address destination, Object payload) implements Event {
-  Stimulus {
+record Emission(@Nullable Address sender, Address destination, Object payload) implements Event {
+  Emission {
     requireNonNull(destination, "destination");
     requireNonNull(payload, "payload");
   }
