@@ -13,9 +13,12 @@ import org.armgals.active.Event;
 import org.armgals.active.Filter;
 import org.armgals.active.Future;
 import org.armgals.active.FutureValue;
+import org.armgals.active.ObjectStoppedException;
 import org.armgals.kernel.spi.MetaContext;
 import org.armgals.kernel.spi.MetaPolicy;
 import org.armgals.representation.State;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
  * A behavioral meta-entity: the models of its base entities, their filters, its policy and the
@@ -23,11 +26,13 @@ import org.armgals.representation.State;
  * other threads (JMX) read.
  */
 final class BehavioralMetaImpl extends EntityImpl<FieldState> implements BehavioralMeta {
+  private static final Logger LOG = LoggerFactory.getLogger(BehavioralMetaImpl.class);
+
   private final MetaPolicy policy;
   private final Damping damping;
   private final Map<Address, Model<?>> models = new LinkedHashMap<>();
   private final List<Entity> bases = new CopyOnWriteArrayList<>();
-  final Map<Address, ModelView> views = new ConcurrentHashMap<>();
+  final Map<Address, Published> views = new ConcurrentHashMap<>();
   private final MetaContext context = new Context();
 
   BehavioralMetaImpl(
@@ -67,7 +72,11 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
     }
     long now = kernel.nanoTime();
     if (m.integrate(n, now)) {
-      m.entity().object().send(new ResyncRequest(address(), n.entity(), m.lastSeq()));
+      try {
+        m.entity().object().send(new ResyncRequest(address(), n.entity(), m.lastSeq()));
+      } catch (ObjectStoppedException e) {
+        LOG.debug("{} is stopped: its model of it stays out of sync", m);
+      }
     }
     publish(m);
     if (Selectors.matches(m.filter, n)) {
@@ -76,7 +85,8 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
   }
 
   private void publish(Model<?> m) {
-    views.put(m.address(), m.view(kernel.nanoTime()));
+    long now = kernel.nanoTime();
+    views.put(m.address(), new Published(m.view(now), now));
   }
 
   private Model<?> model(Address entity) {
@@ -174,10 +184,18 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
 
   long suppressed() {
     long total = 0;
-    for (ModelView v : views.values()) {
-      total += v.suppressedAdaptations();
+    for (Published p : views.values()) {
+      total += p.view().suppressedAdaptations();
     }
     return total;
+  }
+
+  /** A model's view as last published, and when, for readers on other threads. */
+  record Published(ModelView view, long at) {
+    /** How stale the model is at {@code now}. */
+    java.time.Duration staleness(long now) {
+      return view.staleness().plusNanos(Math.max(0, now - at));
+    }
   }
 
   /** What the policy may do; used only on this meta's object. */
@@ -217,8 +235,8 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
   Map<String, String> modelStates() {
     Map<String, String> m = new LinkedHashMap<>();
     for (Entity b : bases) {
-      ModelView v = views.get(b.address());
-      State s = v == null ? null : v.state();
+      Published p = views.get(b.address());
+      State s = p == null ? null : p.view().state();
       m.put(b.name(), s == null ? "?" : s.observe().toString());
     }
     return m;

@@ -117,7 +117,8 @@ final class Jmx {
     @Override
     public Map<String, Long> getStalenessMillis() {
       Map<String, Long> r = new LinkedHashMap<>();
-      each((name, v) -> r.put(name, v.staleness().toMillis()));
+      long now = m.kernel.nanoTime();
+      eachPublished((name, p) -> r.put(name, p.staleness(now).toMillis()));
       return r;
     }
 
@@ -141,11 +142,16 @@ final class Jmx {
     }
 
     private void each(java.util.function.BiConsumer<String, ModelView> f) {
+      eachPublished((name, p) -> f.accept(name, p.view()));
+    }
+
+    private void eachPublished(
+        java.util.function.BiConsumer<String, BehavioralMetaImpl.Published> f) {
       for (Entity b : m.baseLevelEntities()) {
         Address a = b.address();
-        ModelView v = m.views.get(a);
-        if (v != null) {
-          f.accept(b.name(), v);
+        BehavioralMetaImpl.Published p = m.views.get(a);
+        if (p != null) {
+          f.accept(b.name(), p);
         }
       }
     }

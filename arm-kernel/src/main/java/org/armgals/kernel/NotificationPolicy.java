@@ -20,48 +20,60 @@ import java.util.Set;
  * @param observed the grain of state events: the observed names they carry; empty for all
  * @param behaviors the behaviors whose actions are notified; empty for all
  * @param thresholds the thresholds watched
+ * @param depth the grain of state events of a statechart entity: the active states down to this
+ *     depth (1: top-level states only; a composite state stands for all its substates); 0 for the
+ *     finest (every active leaf). Ignored by other representations.
  */
 public record NotificationPolicy(
     boolean states,
     boolean actions,
     Set<String> observed,
     Set<String> behaviors,
-    List<Threshold> thresholds) {
+    List<Threshold> thresholds,
+    int depth) {
 
   /** Checks and copies the components. */
   public NotificationPolicy {
     observed = Set.copyOf(requireNonNull(observed, "observed"));
     behaviors = Set.copyOf(requireNonNull(behaviors, "behaviors"));
     thresholds = List.copyOf(requireNonNull(thresholds, "thresholds"));
+    if (depth < 0) {
+      throw new IllegalArgumentException("depth must be >= 0 (0: finest), was " + depth);
+    }
   }
 
   /** Complete state events and all actions. */
   public static NotificationPolicy all() {
-    return new NotificationPolicy(true, true, Set.of(), Set.of(), List.of());
+    return new NotificationPolicy(true, true, Set.of(), Set.of(), List.of(), 0);
   }
 
   /** Complete state events only. */
   public static NotificationPolicy statesOnly() {
-    return new NotificationPolicy(true, false, Set.of(), Set.of(), List.of());
+    return new NotificationPolicy(true, false, Set.of(), Set.of(), List.of(), 0);
   }
 
   /** Action events only. */
   public static NotificationPolicy actionsOnly() {
-    return new NotificationPolicy(false, true, Set.of(), Set.of(), List.of());
+    return new NotificationPolicy(false, true, Set.of(), Set.of(), List.of(), 0);
   }
 
   /** Nothing but thresholds, failures and reflective requests. */
   public static NotificationPolicy quiet() {
-    return new NotificationPolicy(false, false, Set.of(), Set.of(), List.of());
+    return new NotificationPolicy(false, false, Set.of(), Set.of(), List.of(), 0);
   }
 
   /** This policy with state events restricted to the {@code names} observed (a coarser grain). */
   public NotificationPolicy observing(String... names) {
-    return new NotificationPolicy(states, actions, Set.of(names), behaviors, thresholds);
+    return new NotificationPolicy(states, actions, Set.of(names), behaviors, thresholds, depth);
+  }
+
+  /** This policy with statechart state events at {@code coarseness} (0: finest). */
+  public NotificationPolicy atDepth(int coarseness) {
+    return new NotificationPolicy(states, actions, observed, behaviors, thresholds, coarseness);
   }
 
   /** This policy with these thresholds watched. */
   public NotificationPolicy watching(Threshold... watched) {
-    return new NotificationPolicy(states, actions, observed, behaviors, List.of(watched));
+    return new NotificationPolicy(states, actions, observed, behaviors, List.of(watched), depth);
   }
 }

@@ -92,7 +92,9 @@ public interface StructuralMeta<S extends State> extends Entity {
 
   /**
    * A new instance, in its initial state, with the current behaviors, whose behavioral meta is
-   * {@code meta} (the entity is added to it as by {@link BehavioralMeta#addBaseLevelEntity}).
+   * {@code meta} (the entity is added to it as by {@link BehavioralMeta#addBaseLevelEntity}). An
+   * asynchronous entity is returned attached to its meta; a synchronous (reactive) one takes its
+   * attachment at its clock's next release, before any event sent to it after this call.
    *
    * @throws IllegalArgumentException a blank or taken name
    * @throws UnsupportedOperationException this structural meta makes meta-entities (use {@link

@@ -10,11 +10,15 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Function;
 import java.util.function.UnaryOperator;
 import org.armgals.active.Future;
+import org.armgals.active.Mode;
+import org.armgals.active.ObjectStoppedException;
 import org.armgals.representation.Behavior;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.State;
 import org.armgals.representation.StateSpace;
 import org.jspecify.annotations.Nullable;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
  * A structural meta-entity: the space and the behaviors of its instances, and the instances
@@ -32,6 +36,8 @@ final class StructuralMetaImpl<S extends State> extends EntityImpl<FieldState>
     STRUCTURAL_METAS,
     BEHAVIORAL_METAS
   }
+
+  private static final Logger LOG = LoggerFactory.getLogger(StructuralMetaImpl.class);
 
   private final StateSpace<S> space;
   private final Makes makes;
@@ -130,8 +136,10 @@ final class StructuralMetaImpl<S extends State> extends EntityImpl<FieldState>
       Behaviors<S> next = how.apply(behaviors);
       behaviors = next;
       for (EntityImpl<S> instance : instances) {
-        if (!instance.isStopped()) {
+        try {
           instance.object().send(s -> s.harmonize(next));
+        } catch (ObjectStoppedException e) {
+          LOG.debug("{} is stopped: not harmonized", instance);
         }
       }
     }
@@ -180,7 +188,9 @@ final class StructuralMetaImpl<S extends State> extends EntityImpl<FieldState>
             options,
             servant -> new PlainEntity<>(kernel, entityName, this, servant));
     m.addBaseLevelEntity(e).touch();
-    e.settle();
+    if (options.config().mode() == Mode.ASYNCHRONOUS) {
+      e.settle(); // a reactive entity takes its attachment at its clock's next release
+    }
     return e;
   }
 }

@@ -1,5 +1,7 @@
 package org.armgals.representation.dfa;
 
+import static java.util.Objects.requireNonNull;
+
 import java.util.List;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.Step;
@@ -19,6 +21,7 @@ final class DfaActivation extends BaseActivation<DfaState> {
    */
   @Override
   public List<Step<DfaState>> dispatch(String trigger, @Nullable Object input) {
+    requireNonNull(trigger, "trigger");
     for (DfaTransition t : DfaSpaceImpl.transitionsOf(behaviors())) {
       if (t.label().equals(trigger) && t.source().equals(state())) {
         return List.of(apply(t.id(), input));

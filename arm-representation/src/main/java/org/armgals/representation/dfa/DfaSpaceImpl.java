@@ -60,14 +60,24 @@ final class DfaSpaceImpl implements DfaSpace {
                 + "; expected a DfaTransition");
       }
       for (DfaState s : List.of(t.source(), t.target())) {
-        if (!s.equals(states.get(s.name()))) {
+        DfaState own = states.get(s.name());
+        if (own == null) {
+          throw new IllegalArgumentException(
+              "transition '"
+                  + t.id()
+                  + "' names state '"
+                  + s.name()
+                  + "', which is not in the space; states: "
+                  + states.keySet());
+        }
+        if (!own.equals(s)) {
           throw new IllegalArgumentException(
               "transition '"
                   + t.id()
                   + "' names state "
                   + s
-                  + ", which is not in the space; states: "
-                  + states.values());
+                  + " of another space; this space's is "
+                  + own);
         }
       }
       for (Behavior<DfaState> b : others) {

@@ -1,5 +1,7 @@
 package org.armgals.representation.p;
 
+import static java.util.Objects.requireNonNull;
+
 import java.util.List;
 import java.util.Optional;
 import org.armgals.representation.Behavior;
@@ -21,7 +23,7 @@ final class PActivation extends BaseActivation<PState> {
    */
   @Override
   public List<Step<PState>> dispatch(String trigger, @Nullable Object input) {
-    Optional<Behavior<PState>> method = behaviors().lookup(trigger);
+    Optional<Behavior<PState>> method = behaviors().lookup(requireNonNull(trigger, "trigger"));
     if (method.isEmpty() || !method.get().isApplicable(state(), input)) {
       return List.of();
     }

@@ -27,6 +27,9 @@ final class Chart {
     final List<Node> children = new ArrayList<>();
     final List<Node> initial = new ArrayList<>();
     final List<Node> historyDefault = new ArrayList<>();
+    // Derived from children once the tree is built (the step semantics asks for them often).
+    private List<Node> states = List.of();
+    private List<Node> historyChildren = List.of();
 
     Node(String id, ScNode.Kind kind, @Nullable Node parent, int order, ScNode source) {
       this.id = id;
@@ -60,11 +63,16 @@ final class Chart {
     }
 
     List<Node> stateChildren() {
-      return children.stream().filter(c -> !c.isHistory()).toList();
+      return states;
     }
 
     List<Node> historyChildren() {
-      return children.stream().filter(Node::isHistory).toList();
+      return historyChildren;
+    }
+
+    void freeze() {
+      states = children.stream().filter(c -> !c.isHistory()).toList();
+      historyChildren = children.stream().filter(Node::isHistory).toList();
     }
 
     /** Whether this node is a proper descendant of {@code ancestor}. */
@@ -126,6 +134,10 @@ final class Chart {
       add(child, root, index, sources, order);
     }
     this.byId = Collections.unmodifiableMap(index);
+    root.freeze();
+    for (Node n : index.values()) {
+      n.freeze();
+    }
     for (Map.Entry<Node, ScNode> e : sources.entrySet()) {
       resolve(e.getKey(), e.getValue());
     }

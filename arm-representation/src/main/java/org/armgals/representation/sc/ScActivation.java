@@ -25,6 +25,10 @@ final class ScActivation extends BaseActivation<Configuration> {
   static final int MAX_MICROSTEPS = 1_000;
 
   private final StatechartImpl chart;
+  // The behaviors indexed by source and id, rebuilt when harmonize replaces the behaviors.
+  private @Nullable Behaviors<Configuration> indexed;
+  private Map<String, List<ScTransition>> bySource = Map.of();
+  private Map<String, BoundTransition> byId = Map.of();
 
   ScActivation(StatechartImpl chart, Configuration initial, Behaviors<Configuration> behaviors) {
     super(chart, initial, behaviors, chart.admission());
@@ -54,22 +58,32 @@ final class ScActivation extends BaseActivation<Configuration> {
     return List.copyOf(run.steps);
   }
 
+  private void index() {
+    if (indexed == behaviors()) {
+      return;
+    }
+    Map<String, List<ScTransition>> sources = new LinkedHashMap<>();
+    Map<String, BoundTransition> ids = new LinkedHashMap<>();
+    for (Behavior<Configuration> b : behaviors().all()) {
+      BoundTransition t = (BoundTransition) b;
+      sources.computeIfAbsent(t.spec.source(), s -> new ArrayList<>()).add(t.spec);
+      ids.put(t.spec.id(), t);
+    }
+    bySource = sources;
+    byId = ids;
+    indexed = behaviors();
+  }
+
   /** The bookkeeping of one run-to-completion step. */
   private final class Run {
     final @Nullable Object input;
-    final Map<String, List<ScTransition>> bySource = new LinkedHashMap<>();
-    final Map<String, BoundTransition> byId = new LinkedHashMap<>();
     final List<Step<Configuration>> steps = new ArrayList<>();
     final Deque<String> internal = new ArrayDeque<>();
     Configuration current = state();
 
     Run(@Nullable Object input) {
       this.input = input;
-      for (Behavior<Configuration> b : behaviors().all()) {
-        BoundTransition t = (BoundTransition) b;
-        bySource.computeIfAbsent(t.spec.source(), s -> new ArrayList<>()).add(t.spec);
-        byId.put(t.spec.id(), t);
-      }
+      index();
     }
 
     /** Eventless transitions and internal events until neither is left. */

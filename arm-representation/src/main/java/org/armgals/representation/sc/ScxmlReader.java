@@ -7,6 +7,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.function.Supplier;
 import javax.xml.XMLConstants;
 import javax.xml.parsers.ParserConfigurationException;
 import javax.xml.parsers.SAXParserFactory;
@@ -208,7 +209,14 @@ final class ScxmlReader {
             }
             initial = initialChild(child);
           }
-          case "history/transition" -> historyDefault.addAll(targetOnly(child));
+          case "history/transition" -> {
+            if (!historyDefault.isEmpty()) {
+              throw new ScxmlException(
+                  "<history id=\"" + id + "\"> has a second <transition>; expected at most one",
+                  child.line());
+            }
+            historyDefault.addAll(targetOnly(child));
+          }
           default ->
               throw unsupported(child, "what SCXML allows in <" + kind + "> among the subset");
         }
@@ -346,7 +354,7 @@ final class ScxmlReader {
     }
 
     /** Runs a record's constructor, turning its complaint into an error with the line. */
-    private static <T> T guarded(El el, java.util.function.Supplier<T> make) {
+    private static <T> T guarded(El el, Supplier<T> make) {
       try {
         return make.get();
       } catch (IllegalArgumentException e) {

@@ -7,6 +7,7 @@ import java.util.Map;
 import org.armgals.representation.Behavior;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.StateSpace;
+import org.armgals.representation.Step;
 
 /**
  * A statechart as a state space: its states are {@link Configuration}s, its behaviors are its
@@ -63,6 +64,16 @@ public interface Statechart extends StateSpace<Configuration> {
    *     chart's
    */
   Map<String, Object> observe(Configuration configuration, int depth);
+
+  /**
+   * Whether {@code step} changed what an observer at {@code depth} sees: an entity that notifies
+   * its meta at a coarse grain emits a state event only for such steps.
+   *
+   * @throws IllegalArgumentException as {@link #observe(Configuration, int)}
+   */
+  default boolean changedAt(Step<Configuration> step, int depth) {
+    return !observe(step.before(), depth).equals(observe(step.after(), depth));
+  }
 
   /** Whether a top-level final state is active: no transition is taken any more. */
   boolean isFinished(Configuration configuration);

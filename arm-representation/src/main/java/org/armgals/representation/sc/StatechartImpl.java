@@ -19,21 +19,19 @@ import org.jspecify.annotations.Nullable;
 
 /** A statechart; see {@link Statechart}. */
 final class StatechartImpl implements Statechart {
-  /** mapToState enumerates legal configurations; beyond this many it refuses. */
-  static final int MAX_CONFIGURATIONS = 100_000;
-
   private final ScDefinition definition;
   final Semantics semantics;
   private final Configuration initial;
   private final List<String> initialActions;
   private final OrderedBehaviors.Admission<Configuration> admission;
   private final Behaviors<Configuration> transitions;
-  private volatile @Nullable List<Set<String>> legal;
+  private final Configurations configurations;
 
   StatechartImpl(ScDefinition definition, Map<String, Guard> guards) {
     this.definition = definition;
     this.semantics = new Semantics(new Chart(definition), guards);
     Semantics.Micro start = semantics.initial();
+    this.configurations = new Configurations(semantics.chart, definition.name());
     this.initial = start.after();
     this.initialActions = start.actions();
     this.admission = new Admission(this);
@@ -130,7 +128,7 @@ final class StatechartImpl implements Statechart {
       }
       active.add(n);
     }
-    if (!legal(chart.root, active)) {
+    if (!Configurations.legal(chart.root, active)) {
       return false;
     }
     if (!configuration.history().keySet().equals(historyIds())) {
@@ -142,34 +140,6 @@ final class StatechartImpl implements Statechart {
       }
     }
     return true;
-  }
-
-  /** Whether the active states under {@code compound} form one legal configuration of it. */
-  private static boolean legal(Node node, Set<Node> active) {
-    int on = 0;
-    for (Node child : node.stateChildren()) {
-      if (active.contains(child)) {
-        on++;
-        if (!legal(child, active)) {
-          return false;
-        }
-      } else if (hasActiveDescendant(child, active)) {
-        return false;
-      }
-    }
-    if (node.isParallel()) {
-      return on == node.stateChildren().size();
-    }
-    return node.stateChildren().isEmpty() ? on == 0 : on == 1;
-  }
-
-  private static boolean hasActiveDescendant(Node node, Set<Node> active) {
-    for (Node a : active) {
-      if (a.isDescendantOf(node)) {
-        return true;
-      }
-    }
-    return false;
   }
 
   private Set<String> historyIds() {
@@ -234,7 +204,7 @@ final class StatechartImpl implements Statechart {
       }
     }
     Set<Configuration> candidates = new LinkedHashSet<>();
-    for (Set<String> config : legalConfigurations()) {
+    for (Set<String> config : configurations.all()) {
       if (config.containsAll(required)) {
         candidates.add(new Configuration(config, history));
       }
@@ -256,67 +226,6 @@ final class StatechartImpl implements Statechart {
       ids.add(s);
     }
     return ids;
-  }
-
-  /** Every legal set of active states, each in document order; computed once, when first asked. */
-  private List<Set<String>> legalConfigurations() {
-    List<Set<String>> result = legal;
-    if (result == null) {
-      List<List<Node>> all = new ArrayList<>();
-      for (Node top : semantics.chart.root.stateChildren()) {
-        all.addAll(enumerate(top));
-      }
-      List<Set<String>> ids = new ArrayList<>();
-      for (List<Node> config : all) {
-        config.sort(Chart.DOCUMENT_ORDER);
-        ids.add(Collections.unmodifiableSet(new LinkedHashSet<>(Chart.ids(config))));
-      }
-      result = List.copyOf(ids);
-      legal = result;
-    }
-    return result;
-  }
-
-  private List<List<Node>> enumerate(Node node) {
-    List<List<Node>> result = new ArrayList<>();
-    if (node.isAtomic()) {
-      result.add(new ArrayList<>(List.of(node)));
-    } else if (node.isParallel()) {
-      result.add(new ArrayList<>(List.of(node)));
-      for (Node region : node.stateChildren()) {
-        List<List<Node>> next = new ArrayList<>();
-        for (List<Node> prefix : result) {
-          for (List<Node> sub : enumerate(region)) {
-            List<Node> config = new ArrayList<>(prefix);
-            config.addAll(sub);
-            next.add(config);
-            tooMany(next.size());
-          }
-        }
-        result = next;
-      }
-    } else {
-      for (Node child : node.stateChildren()) {
-        for (List<Node> sub : enumerate(child)) {
-          List<Node> config = new ArrayList<>(List.of(node));
-          config.addAll(sub);
-          result.add(config);
-          tooMany(result.size());
-        }
-      }
-    }
-    return result;
-  }
-
-  private void tooMany(int count) {
-    if (count > MAX_CONFIGURATIONS) {
-      throw new IllegalStateException(
-          "chart '"
-              + definition.name()
-              + "' has more than "
-              + MAX_CONFIGURATIONS
-              + " configurations; mapToState cannot enumerate them");
-    }
   }
 
   @Override

@@ -1,0 +1,230 @@
+package org.armgals.representation.sc;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import org.armgals.representation.Activation;
+import org.armgals.representation.Step;
+import org.junit.jupiter.api.Test;
+
+class ScxmlTest {
+  static String robot() {
+    try (InputStream in = ScxmlTest.class.getResourceAsStream("robot.scxml")) {
+      return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+    } catch (IOException e) {
+      throw new AssertionError(e);
+    }
+  }
+
+  static final Map<String, Guard> GUARDS =
+      Map.of("notCharging", (c, in) -> !c.isActive("Charging"));
+
+  @Test
+  void readingGivesTheDocumentsStatesAndTransitions() {
+    ScDefinition d = Scxml.read(robot());
+    assertThat(d.name()).isEqualTo("explorer");
+    assertThat(d.initial()).isEqualTo("Active");
+    assertThat(d.states()).extracting(ScNode::id).containsExactly("Active", "Charging", "Off");
+    ScNode active = d.states().get(0);
+    assertThat(active.initial()).isEqualTo("Exploring");
+    assertThat(active.children())
+        .extracting(ScNode::kind)
+        .containsExactly(ScNode.Kind.DEEP_HISTORY, ScNode.Kind.PARALLEL);
+    assertThat(d.transitions())
+        .extracting(ScTransition::id)
+        .containsExactly(
+            "Active#1", "Forward#1", "Turning#1", "Wide#1", "Zoom#1", "resume", "Charging#2");
+    ScTransition bump = d.transitions().get(1);
+    assertThat(bump.actions()).containsExactly(ScAction.run("beep"), ScAction.raise("obstacle"));
+    assertThat(d.transitions().get(4).internal()).isTrue();
+    assertThat(d.transitions().get(0).cond()).isEqualTo("notCharging");
+  }
+
+  @Test
+  void readWriteReadGivesTheSameDefinition() {
+    ScDefinition once = Scxml.read(robot());
+    String written = Scxml.write(once);
+    ScDefinition twice = Scxml.read(written);
+    assertThat(twice).isEqualTo(once);
+    assertThat(Scxml.write(twice)).isEqualTo(written);
+  }
+
+  @Test
+  void aDefinitionBuiltInJavaSurvivesWriteAndRead() {
+    ScDefinition robot = ScContractTest.ROBOT;
+    ScDefinition back = Scxml.read(Scxml.write(robot));
+    assertThat(back.states()).isEqualTo(robot.states());
+    assertThat(new HashSet<>(back.transitions())).isEqualTo(new HashSet<>(robot.transitions()));
+  }
+
+  @Test
+  void aChartReadFromScxmlRunsWithEntryExitActionsAndRaisedEvents() {
+    Statechart chart = Statechart.of(Scxml.read(robot()), GUARDS);
+    assertThat(chart.initialActions()).containsExactly("startMotors");
+    Activation<Configuration> a = chart.activate(chart.initialState(), chart.transitions());
+    List<Step<Configuration>> steps = a.dispatch("bump", null);
+    assertThat(steps).extracting(Step::behavior).containsExactly("Forward#1", "Wide#1");
+    assertThat(a.state().active()).contains("Turning", "Zoom");
+
+    assertThat(a.dispatch("battery.low", null))
+        .singleElement()
+        .extracting(Step::result)
+        .isEqualTo(List.of("stopMotors", "dock"));
+    assertThat(a.dispatch("battery.full", null))
+        .singleElement()
+        .extracting(Step::result)
+        .isEqualTo(List.of("startMotors"));
+    assertThat(a.state().active()).contains("Turning", "Zoom");
+  }
+
+  @Test
+  void anUnsupportedElementIsRefusedNamingItAndItsLine() {
+    String doc =
+        """
+        <scxml xmlns="http://www.w3.org/2005/07/scxml" version="1.0">
+          <state id="A">
+            <invoke type="http://www.w3.org/TR/scxml/" src="other.scxml"/>
+          </state>
+        </scxml>
+        """;
+    assertThatThrownBy(() -> Scxml.read(doc))
+        .isInstanceOf(ScxmlException.class)
+        .hasMessageContaining("<invoke>")
+        .hasMessageContaining("line 3")
+        .satisfies(e -> assertThat(((ScxmlException) e).line()).isEqualTo(3));
+  }
+
+  @Test
+  void aDataModelOrScriptIsRefused() {
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml" datamodel="ecmascript">
+                      <state id="A"/>
+                    </scxml>
+                    """))
+        .hasMessageContaining("ecmascript")
+        .hasMessageContaining("line 1");
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml">
+                      <state id="A">
+                        <onentry><script>x = 1</script></onentry>
+                      </state>
+                    </scxml>
+                    """))
+        .hasMessageContaining("<script>")
+        .hasMessageContaining("line 3");
+  }
+
+  @Test
+  void anUnsupportedAttributeOrValueIsRefusedNamingIt() {
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml">
+                      <state id="A" src="x.scxml"/>
+                    </scxml>
+                    """))
+        .hasMessageContaining("'src'")
+        .hasMessageContaining("<state>")
+        .hasMessageContaining("line 2");
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml">
+                      <state id="A">
+                        <history id="H" type="sideways"/>
+                        <state id="A1"/>
+                      </state>
+                    </scxml>
+                    """))
+        .hasMessageContaining("sideways")
+        .hasMessageContaining("line 3");
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml">
+                      <state id="A"><transition event="e" type="sometimes" target="A"/></state>
+                    </scxml>
+                    """))
+        .hasMessageContaining("sometimes");
+  }
+
+  @Test
+  void aHistoryWithTwoDefaultTransitionsIsRefused() {
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml">
+                      <state id="A">
+                        <history id="H">
+                          <transition target="A1"/>
+                          <transition target="A2"/>
+                        </history>
+                        <state id="A1"/>
+                        <state id="A2"/>
+                      </state>
+                    </scxml>
+                    """))
+        .hasMessageContaining("second <transition>")
+        .hasMessageContaining("line 5");
+  }
+
+  @Test
+  void aStateWithoutIdIsRefused() {
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml">
+                      <state/>
+                    </scxml>
+                    """))
+        .hasMessageContaining("<state> has no id")
+        .hasMessageContaining("line 2");
+  }
+
+  @Test
+  void malformedXmlTextAndDoctypesAreRefusedWithTheLine() {
+    assertThatThrownBy(
+            () ->
+                Scxml.read("<scxml xmlns=\"http://www.w3.org/2005/07/scxml\">\n<state id=\"A\">\n"))
+        .isInstanceOf(ScxmlException.class)
+        .hasMessageContaining("malformed");
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml">
+                      <state id="A">hello</state>
+                    </scxml>
+                    """))
+        .hasMessageContaining("text")
+        .hasMessageContaining("line 2");
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <!DOCTYPE scxml [<!ENTITY x SYSTEM "file:///etc/passwd">]>
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml"><state id="A"/></scxml>
+                    """))
+        .isInstanceOf(ScxmlException.class)
+        .hasMessageContaining("DOCTYPE");
+    assertThatThrownBy(() -> Scxml.read("<scxml><state id=\"A\"/></scxml>"))
+        .hasMessageContaining("not <scxml>");
+  }
+}

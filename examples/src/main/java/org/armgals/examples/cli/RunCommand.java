@@ -1,0 +1,101 @@
+package org.armgals.examples.cli;
+
+import java.io.PrintStream;
+import java.net.URI;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.Optional;
+import java.util.OptionalLong;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/** {@code armgals run <example>}: runs one example and prints its summary. */
+@Command(name = "run", description = "Runs an example robot and prints a summary of its run.")
+final class RunCommand implements Callable<Integer> {
+  private final Catalog catalog;
+  private final PrintStream out;
+
+  @Parameters(index = "0", paramLabel = "<example>", description = "the example, as listed")
+  String name = "";
+
+  @Option(names = "--cycles", paramLabel = "<n>", description = "control cycles to run")
+  Long cycles;
+
+  @Option(
+      names = "--seconds",
+      paramLabel = "<s>",
+      description = "simulated seconds to run (instead of --cycles)")
+  Double seconds;
+
+  @Option(
+      names = "--period-ms",
+      paramLabel = "<ms>",
+      defaultValue = "10",
+      description = "control period in milliseconds (default ${DEFAULT-VALUE})")
+  long periodMs;
+
+  @Option(
+      names = "--seed",
+      paramLabel = "<n>",
+      defaultValue = "1",
+      description = "seed of every random choice (default ${DEFAULT-VALUE})")
+  long seed;
+
+  @Option(names = "--atoms", paramLabel = "<n>", description = "number of atoms, where it applies")
+  Integer atoms;
+
+  @Option(names = "--realtime", description = "pace the run to real time")
+  boolean realTime;
+
+  @Option(names = "--broker", paramLabel = "<url>", description = "an external Artemis broker")
+  URI broker;
+
+  @Option(
+      names = "--out",
+      paramLabel = "<dir>",
+      description = "where the run leaves its trace and pictures (default runs/<example>)")
+  Path outDir;
+
+  RunCommand(Catalog catalog, PrintStream out) {
+    this.catalog = catalog;
+    this.out = out;
+  }
+
+  @Override
+  public Integer call() {
+    Example example =
+        catalog
+            .find(name)
+            .orElseThrow(
+                () ->
+                    new UsageException(
+                        "no example named '" + name + "'; 'armgals list' shows them"));
+    RunSettings settings =
+        new RunSettings(
+            cycles == null ? OptionalLong.empty() : OptionalLong.of(cycles),
+            Optional.ofNullable(seconds).map(RunCommand::simulated),
+            Duration.ofMillis(periodMs),
+            seed,
+            Optional.ofNullable(atoms),
+            realTime,
+            Optional.ofNullable(broker),
+            outDir == null ? Path.of("runs", example.name()) : outDir);
+    Summary summary = example.run(settings, out);
+    out.println();
+    out.println("summary of " + example.name() + ":");
+    int width = summary.entries().stream().mapToInt(e -> e.name().length()).max().orElse(0);
+    for (Summary.Entry entry : summary.entries()) {
+      out.printf("  %-" + width + "s  %s%n", entry.name(), entry.value());
+    }
+    return 0;
+  }
+
+  private static Duration simulated(double seconds) {
+    if (!(seconds > 0) || Double.isInfinite(seconds)) {
+      throw new IllegalArgumentException("--seconds must be positive and finite, not " + seconds);
+    }
+    return Duration.ofNanos(Math.round(seconds * 1e9));
+  }
+}

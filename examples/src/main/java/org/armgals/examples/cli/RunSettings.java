@@ -1,0 +1,57 @@
+package org.armgals.examples.cli;
+
+import static java.util.Objects.requireNonNull;
+
+import java.net.URI;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.Optional;
+import java.util.OptionalLong;
+
+/**
+ * The options of {@code armgals run}, checked.
+ *
+ * @param cycles how many control cycles to run, if given
+ * @param simulated how much simulated time to run, if given (at most one of the two)
+ * @param period the control period
+ * @param seed the seed of every random choice of the run
+ * @param atoms the number of atoms, where the example lets it be chosen
+ * @param realTime paced to real time, instead of as fast as possible
+ * @param broker an external Artemis broker, instead of the embedded one
+ * @param out where the run leaves its trace and pictures
+ */
+public record RunSettings(
+    OptionalLong cycles,
+    Optional<Duration> simulated,
+    Duration period,
+    long seed,
+    Optional<Integer> atoms,
+    boolean realTime,
+    Optional<URI> broker,
+    Path out) {
+
+  /** Checks the options against each other and their ranges. */
+  public RunSettings {
+    requireNonNull(cycles, "cycles");
+    requireNonNull(simulated, "simulated");
+    requireNonNull(period, "period");
+    requireNonNull(atoms, "atoms");
+    requireNonNull(broker, "broker");
+    requireNonNull(out, "out");
+    if (cycles.isPresent() && simulated.isPresent()) {
+      throw new IllegalArgumentException("give --cycles or --seconds, not both");
+    }
+    if (cycles.isPresent() && cycles.getAsLong() <= 0) {
+      throw new IllegalArgumentException("--cycles must be at least 1, not " + cycles.getAsLong());
+    }
+    if (simulated.isPresent() && (simulated.get().isNegative() || simulated.get().isZero())) {
+      throw new IllegalArgumentException("--seconds must be positive, not " + simulated.get());
+    }
+    if (period.isNegative() || period.isZero()) {
+      throw new IllegalArgumentException("--period must be positive, not " + period);
+    }
+    if (atoms.isPresent() && atoms.get() < 1) {
+      throw new IllegalArgumentException("--atoms must be at least 1, not " + atoms.get());
+    }
+  }
+}
