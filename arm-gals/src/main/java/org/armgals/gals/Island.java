@@ -4,7 +4,6 @@ import static java.util.Objects.requireNonNull;
 
 import java.time.Duration;
 import java.util.List;
-import java.util.concurrent.CompletionStage;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.TimeSource;
 import org.armgals.kernel.AdaptationPoint;
@@ -69,21 +68,16 @@ public interface Island extends AutoCloseable {
 
   /**
    * Creates a kernel entity of {@code kind} in the synchronous mode on this island (paper §5.3,
-   * figure 8: a base-level entity released by the island's clock): it takes the stimuli waiting at
-   * each release, and applies the adaptation requests of its behavioral meta at the island's {@link
+   * figure 8: a base-level entity released by the island's clock): it takes its attachment to
+   * {@code meta}, and then the stimuli waiting at each release, at the island's releases, and
+   * applies the adaptation requests of its behavioral meta at the island's {@link
    * #adaptationPoint()}. It belongs to its kernel ({@link StructuralMeta#instances()}), not to
    * {@link #entities()}: the kernel stops it; once the island is closed it is no longer released.
    *
-   * <p>The kernel hands out a new entity only once its object has processed a first event, which a
-   * synchronous object does at a release: the stage completes after the island's next release (the
-   * next {@link #step()}, or within a period once started). Until then the kernel is making it on a
-   * virtual thread of its own.
-   *
-   * @return completes with the entity, or exceptionally with the kernel's refusal (a blank or taken
-   *     name)
+   * @throws IllegalArgumentException a blank or taken name (in the kernel)
    * @throws IllegalStateException the island is closed
    */
-  CompletionStage<Entity> spawn(
+  Entity spawn(
       StructuralMeta<?> kind, String name, BehavioralMeta meta, NotificationPolicy notification);
 
   /** Its entities, in the order they were spawned. */

@@ -4,8 +4,6 @@ import static java.util.Objects.requireNonNull;
 
 import java.time.Duration;
 import java.util.List;
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.CompletionStage;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.LockSupport;
@@ -117,29 +115,18 @@ final class IslandImpl implements Island {
   }
 
   @Override
-  public CompletionStage<Entity> spawn(
+  public Entity spawn(
       StructuralMeta<?> kind, String name, BehavioralMeta meta, NotificationPolicy notification) {
     requireNonNull(kind, "kind");
     requireNonNull(name, "name");
     requireNonNull(meta, "meta");
     requireNonNull(notification, "notification");
-    if (closed) {
-      throw new IllegalStateException("island " + this.name + " is closed");
+    synchronized (entities) {
+      if (closed) {
+        throw new IllegalStateException("island " + this.name + " is closed");
+      }
+      return kind.newEntity(name, meta, new EntityOptions(config, notification, adaptationPoint));
     }
-    EntityOptions options = new EntityOptions(config, notification, adaptationPoint);
-    CompletableFuture<Entity> made = new CompletableFuture<>();
-    // newEntity waits until the entity's object has processed a first event: at a release
-    Thread.ofVirtual()
-        .name("armgals-island-" + this.name + "-spawn-" + name)
-        .start(
-            () -> {
-              try {
-                made.complete(kind.newEntity(name, meta, options));
-              } catch (RuntimeException e) {
-                made.completeExceptionally(e);
-              }
-            });
-    return made;
   }
 
   @Override
