@@ -8,7 +8,9 @@
 # Builds benchmarks/target/benchmarks.jar with the Maven wrapper, then runs the named benchmarks
 # in one JVM (org.armgals.bench.gals.Gals, one entry point with named benchmarks; a new one is
 # registered there) on a JDK >= 21 (JAVA_HOME if it is one, else the newest under /usr/lib/jvm),
-# with GALS_JAVA_OPTS (default "-Xms1g -Xmx1g"). Prints one line per measurement:
+# with GALS_JAVA_OPTS (default "-Xms1g -Xmx1g"; -Dgals.workers=n sets the island runtime's
+# workers, default one per core). Prints one line per measurement (the island's full figures go
+# to standard error):
 #   gals name=jitter impl=<armgals|raw> hz=1000 p50_us=<a> p99_us=<b> max_us=<c>
 # (see docs/gals-guide.md). Measure on a quiet machine: jitter is what other load does to us.
 set -euo pipefail
@@ -24,7 +26,7 @@ while (($#)); do
   case "$1" in
     --seconds) seconds="${2:?--seconds needs a count}"; shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "gals.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) names+=("$1"); shift ;;
   esac
@@ -78,4 +80,4 @@ fi
 
 read -r -a opts <<<"${GALS_JAVA_OPTS:--Xms1g -Xmx1g}"
 echo "# $("$java" -version 2>&1 | head -1); options: ${opts[*]}; $(nproc) cores" >&2
-"$java" "${opts[@]}" -cp "$jar" org.armgals.bench.gals.Gals --seconds "$seconds" "${names[@]}"
+"$java" "${opts[@]}" "-Dgals.seconds=$seconds" -cp "$jar" org.armgals.bench.gals.Gals "${names[@]}"

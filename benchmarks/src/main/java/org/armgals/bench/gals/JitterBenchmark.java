@@ -17,23 +17,34 @@ import org.armgals.gals.IslandStats;
  * release and does the same work itself. Both run in this JVM, one after the other, each warmed up
  * as long as it is measured.
  */
-final class JitterBenchmark implements GalsBenchmark {
+final class JitterBenchmark {
   static final int ENTITIES = 100;
   static final Duration PERIOD = Duration.ofMillis(1);
   private static final long SPIN_NANOS = 100_000;
 
-  @Override
-  public String name() {
-    return "jitter";
-  }
+  private JitterBenchmark() {}
 
-  @Override
-  public void run(int seconds, PrintStream out) throws Exception {
+  /**
+   * Prints the two lines. Each measured part runs {@code -Dgals.seconds} seconds (default 5), after
+   * a warm-up as long.
+   */
+  static void run() throws Exception {
+    int seconds = Integer.getInteger("gals.seconds", 5);
+    if (seconds < 1) {
+      throw new IllegalArgumentException("gals.seconds must be >= 1, was " + seconds);
+    }
+    PrintStream out = System.out;
     Duration length = Duration.ofSeconds(seconds);
-    try (ActiveRuntime runtime = ActiveRuntime.builder().name("jitter").jmx(false).build()) {
+    try (ActiveRuntime runtime =
+        ActiveRuntime.builder()
+            .name("jitter")
+            .workers(Integer.getInteger("gals.workers", Runtime.getRuntime().availableProcessors()))
+            .jmx(false)
+            .build()) {
       armgals(runtime, length); // warm-up
       IslandStats s = armgals(runtime, length);
       print(out, "armgals", s.jitterP50(), s.jitterP99(), s.jitterMax());
+      System.err.println("# armgals island: " + s);
     }
     raw(length); // warm-up
     Histogram h = raw(length);
