@@ -14,7 +14,7 @@
 # rounds of every workload on each transport (invm, netty) with each implementation (raw Jakarta
 # JMS; armgals: two runtimes, each with its own JmsTransport), interleaved so that all see much
 # the same load.
-# Uses a JDK >= 21 (JAVA_HOME if it is one, else the newest under /usr/lib/jvm) with the options
+# Uses a JDK >= 21 (scripts/java.sh) with the options
 # in BROKER_JAVA_OPTS, default "-Xms1g -Xmx1g". Prints one line per run (docs/benchmarks-broker.md):
 #   broker name=events impl=<raw|armgals> transport=<invm|netty> ops_per_s=<x>
 #   broker name=futurertt impl=<raw|armgals> transport=<invm|netty> p50_us=<x> p99_us=<y>
@@ -39,47 +39,9 @@ while (($#)); do
   esac
 done
 
-# The major version of the JDK at $1, or nothing if it is not a JDK.
-jdk_major() {
-  local home="$1" version=""
-  [[ -x "$home/bin/java" ]] || return 0
-  if [[ -f "$home/release" ]]; then
-    version="$(sed -n 's/^JAVA_VERSION="\(.*\)"/\1/p' "$home/release")"
-  fi
-  if [[ -z "$version" ]]; then
-    version="$("$home/bin/java" -XshowSettings:properties -version 2>&1 |
-      sed -n 's/^ *java\.specification\.version = //p')"
-  fi
-  version="${version#1.}"
-  echo "${version%%[.+-]*}"
-}
-
-find_java() {
-  local best="" best_major=0 home major
-  if [[ -n "${JAVA_HOME:-}" ]]; then
-    major="$(jdk_major "$JAVA_HOME")"
-    if [[ -n "$major" ]] && ((major >= 21)); then
-      echo "$JAVA_HOME/bin/java"
-      return
-    fi
-  fi
-  for home in /usr/lib/jvm/*/; do
-    home="${home%/}"
-    [[ -L "$home" ]] && continue
-    major="$(jdk_major "$home")"
-    if [[ -n "$major" ]] && ((major > best_major)); then
-      best="$home"
-      best_major="$major"
-    fi
-  done
-  if ((best_major < 21)); then
-    echo "broker.sh: no JDK >= 21 (JAVA_HOME=${JAVA_HOME:-unset}, nothing newer under /usr/lib/jvm)" >&2
-    exit 1
-  fi
-  echo "$best/bin/java"
-}
-
-java="$(find_java)"
+# shellcheck source=../scripts/java.sh
+source "$root/scripts/java.sh"
+java="$(find_java broker.sh)"
 if ((build)); then
   (cd "$root" && ./mvnw -B -q -pl benchmarks -am package -DskipTests) >&2
 fi

@@ -1,74 +1,40 @@
 #!/usr/bin/env bash
-# Runs the GALS and MAAM benchmarks: benchmarks/gals.sh [--no-build] [name...]
+# Runs the GALS and MAAM benchmarks: benchmarks/gals.sh [--seconds s] [--no-build] [name...]
 #
-#   name        reschedule cycle-overhead (default: all); each prints its own lines:
+#   name        reschedule cycle-overhead jitter (default: all); each prints its own lines:
 #                 gals name=reschedule modules=<n> ms=<x>       n = 1,000, 10,000, 100,000
 #                 gals name=cycle-overhead ratio=<x>            robot cycle / hand-written loop
+#                 gals name=jitter impl=<armgals|raw> hz=1000 p50_us=<a> p99_us=<b> max_us=<c>
+#   --seconds   how long each measured part of jitter runs (default 5; warmed up as long again)
 #   --no-build  use benchmarks/target/benchmarks.jar as it is
 #
 # Builds benchmarks/target/benchmarks.jar with the Maven wrapper, then runs the entry point
-# org.armgals.bench.gals.Gals with the names given, in one JVM, on a JDK >= 21 (JAVA_HOME if it
-# is one, else the newest under /usr/lib/jvm), with GALS_JAVA_OPTS (default "-Xms1g -Xmx1g").
-# The result lines go to standard output, details (CPU time, ns per cycle) to standard error.
-# A new benchmark is one more name in Gals.java's table (see docs/maam-guide.md, "Measuring").
+# org.armgals.bench.gals.Gals with the names given, in one JVM, on a JDK >= 21 (scripts/java.sh),
+# with GALS_JAVA_OPTS (default "-Xms1g -Xmx1g"; -Dgals.workers=n sets the island runtime's
+# workers, default one per core). Result lines go to standard output, details to standard error
+# (docs/maam-guide.md "Measuring", docs/gals-guide.md). Measure on a quiet machine.
 set -euo pipefail
 
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(dirname "$here")"
 jar="$here/target/benchmarks.jar"
 
-names=()
+seconds=5
 build=1
+names=()
 while (($#)); do
   case "$1" in
+    --seconds) seconds="${2:?--seconds needs a count}"; shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "gals.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) names+=("$1"); shift ;;
   esac
 done
 
-# The major version of the JDK at $1, or nothing if it is not a JDK.
-jdk_major() {
-  local home="$1" version=""
-  [[ -x "$home/bin/java" ]] || return 0
-  if [[ -f "$home/release" ]]; then
-    version="$(sed -n 's/^JAVA_VERSION="\(.*\)"/\1/p' "$home/release")"
-  fi
-  if [[ -z "$version" ]]; then
-    version="$("$home/bin/java" -XshowSettings:properties -version 2>&1 |
-      sed -n 's/^ *java\.specification\.version = //p')"
-  fi
-  version="${version#1.}"
-  echo "${version%%[.+-]*}"
-}
-
-find_java() {
-  local best="" best_major=0 home major
-  if [[ -n "${JAVA_HOME:-}" ]]; then
-    major="$(jdk_major "$JAVA_HOME")"
-    if [[ -n "$major" ]] && ((major >= 21)); then
-      echo "$JAVA_HOME/bin/java"
-      return
-    fi
-  fi
-  for home in /usr/lib/jvm/*/; do
-    home="${home%/}"
-    [[ -L "$home" ]] && continue
-    major="$(jdk_major "$home")"
-    if [[ -n "$major" ]] && ((major > best_major)); then
-      best="$home"
-      best_major="$major"
-    fi
-  done
-  if ((best_major < 21)); then
-    echo "gals.sh: no JDK >= 21 (JAVA_HOME=${JAVA_HOME:-unset}, nothing newer under /usr/lib/jvm)" >&2
-    exit 1
-  fi
-  echo "$best/bin/java"
-}
-
-java="$(find_java)"
+# shellcheck source=../scripts/java.sh
+source "$root/scripts/java.sh"
+java="$(find_java gals.sh)"
 if ((build)); then
   (cd "$root" && ./mvnw -B -q -pl benchmarks -am package -DskipTests) >&2
 fi
@@ -76,4 +42,4 @@ fi
 
 read -r -a opts <<<"${GALS_JAVA_OPTS:--Xms1g -Xmx1g}"
 echo "# $("$java" -version 2>&1 | head -1); options: ${opts[*]}; $(nproc) cores" >&2
-"$java" "${opts[@]}" -cp "$jar" org.armgals.bench.gals.Gals "${names[@]}"
+"$java" "${opts[@]}" "-Dgals.seconds=$seconds" -cp "$jar" org.armgals.bench.gals.Gals "${names[@]}"

@@ -178,6 +178,7 @@ class ModuleBoundariesTest {
   @CsvSource({
     "arm-representation, org.armgals.representation",
     "arm-kernel, org.armgals.kernel",
+    "arm-gals, org.armgals.gals",
     "arm-presence, org.armgals.presence",
     "maam-framework, org.armgals.maam",
     "maam-sim, org.armgals.maam.sim"

@@ -1,0 +1,50 @@
+package org.armgals.gals;
+
+import java.time.Duration;
+import java.util.List;
+import org.armgals.active.ServantFunction;
+import org.jspecify.annotations.Nullable;
+
+/**
+ * What a {@link Reaction} sees of its cycle and may do in it. Valid only during the call to {@link
+ * Reaction#react} it was given to, on that thread.
+ *
+ * @param <S> the type of the entity's state
+ */
+public interface CycleContext<S> {
+
+  /** The island's instant, 1 for the first cycle. */
+  long instant();
+
+  /** The entity's state; only its own reactions and adaptations touch it. */
+  S state();
+
+  /**
+   * The payloads the entity took at this release, ordered by sender (address, then send order),
+   * those sent from outside any entity last in arrival order. The same list for every reaction of
+   * the cycle.
+   */
+  List<Object> inputs();
+
+  /**
+   * Sends {@code payload} to {@code target}, which sees it at its next release: instant {@code k +
+   * 1} in this island, the next release of the target's island otherwise. Never blocks; when the
+   * target's buffer is full its oldest event is dropped.
+   */
+  void emit(ReactiveEntity<?> target, Object payload);
+
+  /**
+   * Asks {@code target} for a value: {@code query} runs on the target's state when the target takes
+   * the request (its next release), and the answer comes back as an event at a later release of
+   * this entity. The awaited value belongs to the reaction running now: it times out after {@code
+   * timeout} (rounded up to whole periods of this island, at least one) and is cancelled if that
+   * reaction is removed.
+   *
+   * @throws IllegalArgumentException {@code timeout} is not positive
+   */
+  <T, R extends @Nullable Object> AwaitedValue<R> call(
+      ReactiveEntity<T> target, ServantFunction<? super T, R> query, Duration timeout);
+
+  /** Adds a line to the island's per-cycle trace (when tracing is on; otherwise does nothing). */
+  void trace(String line);
+}

@@ -1,0 +1,24 @@
+package org.armgals.gals;
+
+import java.time.Duration;
+import java.util.concurrent.atomic.AtomicLong;
+import org.armgals.active.TimeSource;
+
+/** A time source moved by the test (and by reactions that pretend to work for a while). */
+final class FakeTime implements TimeSource {
+  private final AtomicLong now = new AtomicLong();
+
+  @Override
+  public long nanoTime() {
+    return now.get();
+  }
+
+  void advance(Duration d) {
+    now.addAndGet(d.toNanos());
+  }
+
+  /** The pacing of a real-time runner on this time: waiting is moving time forward. */
+  Pacing pacing() {
+    return (time, due, stop) -> now.accumulateAndGet(due, Math::max);
+  }
+}
