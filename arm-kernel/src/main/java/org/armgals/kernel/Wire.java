@@ -34,6 +34,20 @@ final class Wire {
     }
   }
 
+  /**
+   * A structural modification from a structural meta ({@code sender}) to its twin in another
+   * runtime ({@code destination}): add the behavior of that name from the twin's catalog, or delete
+   * it.
+   */
+  record Modify(Address sender, Address destination, String behavior, boolean add)
+      implements Event {
+    Modify {
+      requireNonNull(sender, "sender");
+      requireNonNull(destination, "destination");
+      requireNonNull(behavior, "behavior");
+    }
+  }
+
   /** {@link Entity#call} on an entity of another runtime; answers the behavior's result. */
   record Call(
       @Nullable Address sender, Address destination, String behavior, @Nullable Object input)
@@ -75,6 +89,7 @@ final class Wire {
             AdaptationAck.class)) {
       builder.allow(JmsTransport.Topic.BMETA, toMeta);
     }
+    builder.allow(JmsTransport.Topic.SMETA, Modify.class);
     return builder.allow(
         AdaptationRequest.class,
         ResyncRequest.class,

@@ -15,6 +15,7 @@ import org.armgals.active.Address;
 import org.armgals.active.EmbeddedBroker;
 import org.armgals.active.JmsTransport;
 import org.armgals.kernel.spi.MetaPolicy;
+import org.armgals.representation.p.PMethod;
 import org.armgals.representation.p.PState;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
@@ -218,6 +219,28 @@ class AcrossRuntimesTest {
   }
 
   @Test
+  void aNotificationThatCannotCrossIsAFailureOfTheEntityAndAGapForTheRemoteMeta() {
+    Entity robot = robot("robot", NotificationPolicy.actionsOnly());
+    Recorder seen = new Recorder();
+    BehavioralMeta meta = metaKernel.newBehavioralMeta("models", seen, Damping.none());
+    Entity remote = metaKernel.lookupRemote(metaTransport, "robot", metaRobots);
+    meta.addBaseLevelEntity(remote).touch();
+    awaitModel(meta, remote, v -> v.lastSeq() >= 1);
+
+    Thread notOnTheWire = new Thread(() -> {});
+    assertThatThrownBy(() -> robot.call("eco", notOnTheWire).getValue(WAIT))
+        .hasMessageContaining(Thread.class.getName());
+
+    ModelView model =
+        awaitModel(meta, remote, v -> !v.resyncing() && robot.state().equals(v.state()));
+    assertThat(model.resyncRequests()).isEqualTo(1);
+    assertThat(model.state().observe()).containsEntry("mode", "eco");
+    assertThat(seen.of(FailureEvent.class))
+        .singleElement()
+        .satisfies(f -> assertThat(f.toString()).contains(Thread.class.getName()));
+  }
+
+  @Test
   void notificationsTheRemoteMetaFiltersOutAreIntegratedNotTakenForGaps() {
     Entity robot = robot("robot", NotificationPolicy.all());
     Recorder seen = new Recorder();
@@ -283,5 +306,48 @@ class AcrossRuntimesTest {
     assertThatThrownBy(() -> baseKernel.remoteEntity("robot", robot.address(), baseRobots))
         .isInstanceOf(IllegalArgumentException.class)
         .hasMessageContaining("of this runtime");
+  }
+
+  @Test
+  void aBehaviorTaughtByNameReachesTheInstancesOfATwinKindInAnotherRuntime() {
+    Entity robot = robot("robot", NotificationPolicy.actionsOnly());
+    PMethod turbo = PMethod.of("turbo", (st, in) -> st.with("mode", "turbo"));
+    baseRobots.catalog(KernelFixture.ROBOT.methods(turbo)).touch();
+    baseTransport.register("Robot", baseRobots.address());
+    Address twin = metaTransport.lookup("Robot").getValue(WAIT);
+    metaRobots.mirrorTo(twin).touch();
+    BehavioralMeta meta =
+        metaKernel.newBehavioralMeta("teacher", MetaPolicy.MODEL_ONLY, Damping.none());
+    Entity remote = metaKernel.lookupRemote(metaTransport, "robot", metaRobots);
+    meta.addBaseLevelEntity(remote).touch();
+    awaitModel(meta, remote, v -> v.lastSeq() >= 1);
+
+    metaRobots.addBehavior(turbo).touch(); // flow 4 on arm/SMeta, then flow 5 in the base runtime
+    awaitBehavior(robot, "turbo", true);
+    assertThat(baseRobots.lookup("turbo")).isPresent();
+    assertThat(meta.adapt(remote, new Adaptation.ApplyBehavior("turbo", null)).getValue(WAIT))
+        .isEqualTo(OptionalLong.of(1));
+    awaitApplied(robot, 1);
+    assertThat(robot.state().observe()).containsEntry("mode", "turbo");
+    assertThat(awaitModel(meta, remote, v -> robot.state().equals(v.state())).resyncRequests())
+        .as("the model replays the new behavior with the meta runtime's copy of the kind")
+        .isZero();
+
+    PMethod fly = PMethod.of("fly", (st, in) -> st.with("mode", "flying"));
+    metaRobots.addBehavior(fly).touch(); // not in the base kind's catalog: refused there
+    metaRobots.deleteBehavior("turbo").touch();
+    awaitBehavior(robot, "turbo", false);
+    assertThat(baseRobots.lookup("fly")).isEmpty();
+    assertThat(baseRobots.behaviors().names()).doesNotContain("fly", "turbo");
+    assertThatThrownBy(() -> robot.call("turbo", null).getValue(WAIT))
+        .hasMessageContaining("turbo");
+  }
+
+  /** Returns once {@code base} has (or has lost) the behavior {@code name}. */
+  static void awaitBehavior(Entity base, String name, boolean present) {
+    ((EntityImpl<?>) base)
+        .object()
+        .callWhen(s -> s.behaviors().lookup(name).isPresent() == present, s -> Boolean.TRUE)
+        .getValue(WAIT);
   }
 }
