@@ -17,8 +17,10 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.Collections;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import org.jspecify.annotations.Nullable;
 
 /**
@@ -148,12 +150,19 @@ final class WireCodec {
           || c == String.class
           || c == Address.class
           || c == byte[].class
+          || c == Object.class
           || allows(c)) {
+        return;
+      }
+      if (c.isInterface() && c.isSealed()) {
+        for (Class<?> sub : c.getPermittedSubclasses()) {
+          checkEncodable(owner, component, sub);
+        }
         return;
       }
     } else if (t instanceof ParameterizedType p
         && p.getRawType() instanceof Class<?> raw
-        && (raw == List.class || raw == Map.class)) {
+        && (raw == List.class || raw == Set.class || raw == Map.class)) {
       Type[] args = p.getActualTypeArguments();
       if (raw == Map.class && args[0] != String.class) {
         throw refuse(owner, component, t, "map keys must be Strings");
@@ -165,8 +174,9 @@ final class WireCodec {
         owner,
         component,
         t,
-        "expected a primitive, a boxed primitive, String, Address, byte[], List<T>, Map<String, T>"
-            + " or an allowed record or enum");
+        "expected a primitive, a boxed primitive, String, Address, byte[], Object (any of these),"
+            + " List<T>, Set<T>, Map<String, T>, an allowed record or enum, or a sealed interface"
+            + " whose permitted types are allowed");
   }
 
   private static IllegalArgumentException refuse(Class<?> owner, String comp, Type t, String why) {
@@ -233,6 +243,12 @@ final class WireCodec {
       case List<?> list -> {
         out.put(LIST).buffer(4).putInt(list.size());
         for (Object e : list) {
+          write(out, e, depth + 1);
+        }
+      }
+      case Set<?> set -> {
+        out.put(LIST).buffer(4).putInt(set.size());
+        for (Object e : set) {
           write(out, e, depth + 1);
         }
       }
@@ -384,6 +400,11 @@ final class WireCodec {
     Object[] args = new Object[s.types().length];
     for (int i = 0; i < args.length; i++) {
       Object v = read(in, depth + 1);
+      if (v instanceof List<?> list
+          && s.types()[i] instanceof ParameterizedType p
+          && p.getRawType() == Set.class) {
+        v = Collections.unmodifiableSet(new LinkedHashSet<>(list));
+      }
       check(s, i, s.types()[i], v);
       args[i] = v;
     }
@@ -406,6 +427,12 @@ final class WireCodec {
       Type element = args[args.length - 1];
       if (raw == List.class && v instanceof List<?> list) {
         for (Object e : list) {
+          check(s, i, element, e);
+        }
+        return;
+      }
+      if (raw == Set.class && v instanceof Set<?> set) {
+        for (Object e : set) {
           check(s, i, element, e);
         }
         return;

@@ -46,6 +46,18 @@ class WireCodecTest {
 
   record HoldsSet(java.util.Set<String> names) {}
 
+  record HoldsRunnable(Runnable task) {}
+
+  record HoldsThreads(java.util.Set<Thread> threads) {}
+
+  sealed interface Shape permits Square, Circle {}
+
+  record Square(double side) implements Shape {}
+
+  record Circle(double radius) implements Shape {}
+
+  record HoldsShape(Shape shape) {}
+
   static final WireCodec CODEC = new WireCodec(List.of(JmsFixture.ALLOWED), 4096);
 
   static final Address TO = new Address("b", 1);
@@ -78,17 +90,51 @@ class WireCodecTest {
         .isInstanceOf(IllegalArgumentException.class)
         .hasMessageContaining("java.lang.String")
         .hasMessageContaining("record or an enum");
-    assertThatThrownBy(() -> new WireCodec(List.of(HoldsObject.class), 4096))
+    assertThatThrownBy(() -> new WireCodec(List.of(HoldsRunnable.class), 4096))
+        .as("an interface that is not sealed")
         .isInstanceOf(IllegalArgumentException.class)
-        .hasMessageContaining("'anything'")
-        .hasMessageContaining("java.lang.Object");
+        .hasMessageContaining("'task'")
+        .hasMessageContaining("java.lang.Runnable");
+    assertThatThrownBy(() -> new WireCodec(List.of(HoldsShape.class, Square.class), 4096))
+        .as("a sealed interface whose permitted types are not all allowed")
+        .isInstanceOf(IllegalArgumentException.class)
+        .hasMessageContaining("Circle");
     assertThatThrownBy(() -> new WireCodec(List.of(HoldsNested.class), 4096))
         .as("a nested record must be allowed too")
         .isInstanceOf(IllegalArgumentException.class)
         .hasMessageContaining("Reading");
-    assertThatThrownBy(() -> new WireCodec(List.of(HoldsSet.class), 4096))
+    assertThatThrownBy(() -> new WireCodec(List.of(HoldsThreads.class), 4096))
         .isInstanceOf(IllegalArgumentException.class)
-        .hasMessageContaining("java.util.Set");
+        .hasMessageContaining("java.lang.Thread");
+  }
+
+  @Test
+  void objectSetAndSealedInterfaceComponentsCarryOnlyWhatTheCodecEncodes() throws Exception {
+    WireCodec codec =
+        new WireCodec(
+            List.of(
+                HoldsObject.class,
+                HoldsSet.class,
+                HoldsShape.class,
+                Square.class,
+                Circle.class,
+                Reading.class,
+                Level.class),
+            4096);
+    Reading reading = new Reading("x", 1.5, Level.LOW, List.of(1));
+    for (Object v : List.of("s", 2.5, List.of(1L, "two"), Map.of("k", true), reading)) {
+      byte[] b = WireCodec.body(List.of(codec.encodeValue(new HoldsObject(v))));
+      assertThat(codec.decode(b)).containsExactly(new HoldsObject(v));
+    }
+    HoldsSet set = new HoldsSet(java.util.Set.of("a", "b"));
+    assertThat(codec.decode(WireCodec.body(List.of(codec.encodeValue(set))))).containsExactly(set);
+    HoldsShape shape = new HoldsShape(new Circle(2));
+    assertThat(codec.decode(WireCodec.body(List.of(codec.encodeValue(shape)))))
+        .containsExactly(shape);
+    assertThatThrownBy(() -> codec.encodeValue(new HoldsObject(new Positive(1))))
+        .as("an Object component holding a type not allowed")
+        .isInstanceOf(IllegalArgumentException.class)
+        .hasMessageContaining(Positive.class.getName());
   }
 
   @Test

@@ -72,11 +72,7 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
     }
     long now = kernel.nanoTime();
     if (m.integrate(n, now)) {
-      try {
-        m.entity().object().send(new ResyncRequest(address(), n.entity(), m.lastSeq()));
-      } catch (ObjectStoppedException e) {
-        LOG.debug("{} is stopped: its model of it stays out of sync", m);
-      }
+      sendTo(m.entity(), new ResyncRequest(address(), n.entity(), m.lastSeq()));
     }
     publish(m);
     if (Selectors.matches(m.filter, n)) {
@@ -98,42 +94,93 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
     return m;
   }
 
+  /**
+   * {@code entity} as a base entity this meta can take: an entity of its kernel, or a handle of its
+   * kernel on an entity of another runtime.
+   */
+  private Entity base(Entity entity) {
+    if (entity instanceof RemoteEntity r && r.kernel() == kernel) {
+      return r;
+    }
+    return kernel.own(entity);
+  }
+
+  private Model<?> newModel(Entity e) {
+    StructuralMetaImpl<?> kind =
+        e instanceof RemoteEntity r ? r.kind() : ((EntityImpl<?>) e).structuralMetaImpl();
+    return newModel(e, kind);
+  }
+
+  private <S extends State> Model<S> newModel(Entity e, StructuralMetaImpl<S> kind) {
+    return new Model<>(e, kind, damping, kernel.options().resyncRetry(), kernel.nanoTime());
+  }
+
+  /** Sends {@code event} to a base entity, of this runtime or of another. */
+  private void sendTo(Entity e, Event event) {
+    try {
+      if (e instanceof EntityImpl<?> local) {
+        local.object().send(event);
+      } else {
+        kernel.runtime().ref(e.address()).send(event);
+      }
+    } catch (ObjectStoppedException stopped) {
+      LOG.debug("{} is stopped: {} not delivered", e, event);
+    }
+  }
+
   @Override
   public Future addBaseLevelEntity(Entity entity) {
-    EntityImpl<?> e = kernel.own(entity);
+    Entity e = base(entity);
     return object()
         .signal(
             own -> {
               if (models.containsKey(e.address())) {
                 return;
               }
-              BehavioralMetaImpl previous = e.servant.meta();
-              if (previous != null && previous != this) {
-                previous.deleteBaseLevelEntity(e);
+              if (e instanceof EntityImpl<?> local) {
+                BehavioralMetaImpl previous = local.servant.meta();
+                if (previous != null && previous != this) {
+                  previous.deleteBaseLevelEntity(local);
+                }
               }
-              Model<?> m =
-                  new Model<>(e, damping, kernel.options().resyncRetry(), kernel.nanoTime());
+              Model<?> m = newModel(e);
               models.put(e.address(), m);
               bases.add(e);
               publish(m);
-              e.object().send(s -> s.attach(this));
+              switch (e) {
+                case EntityImpl<?> local -> local.object().send(s -> s.attach(this));
+                case RemoteEntity remote -> {
+                  remote.meta(this);
+                  sendTo(remote, new Wire.Attach(address(), remote.address()));
+                }
+                default -> throw new IllegalStateException("not a base entity: " + e);
+              }
               own.call(KernelBehaviors.ADD_BASE, e.name());
             });
   }
 
   @Override
   public Future deleteBaseLevelEntity(Entity entity) {
-    EntityImpl<?> e = kernel.own(entity);
+    Entity e = base(entity);
     return object()
         .signal(
             own -> {
               if (models.remove(e.address()) == null) {
                 return;
               }
-              bases.remove(e);
+              bases.removeIf(b -> b.address().equals(e.address()));
               views.remove(e.address());
-              if (!e.isStopped()) {
-                e.object().send(s -> s.detach(this));
+              switch (e) {
+                case EntityImpl<?> local -> {
+                  if (!local.isStopped()) {
+                    local.object().send(s -> s.detach(this));
+                  }
+                }
+                case RemoteEntity remote -> {
+                  remote.meta(null);
+                  sendTo(remote, new Wire.Detach(address(), remote.address()));
+                }
+                default -> throw new IllegalStateException("not a base entity: " + e);
               }
               own.call(KernelBehaviors.DELETE_BASE, e.name());
             });
@@ -146,7 +193,7 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
 
   @Override
   public Future setFilter(Entity entity, String selector) {
-    EntityImpl<?> e = kernel.own(entity);
+    Entity e = base(entity);
     Filter compiled = Filter.selector(selector);
     return object().signal(own -> swapFilter(e.address(), compiled));
   }
@@ -159,13 +206,13 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
 
   @Override
   public FutureValue<ModelView> model(Entity entity) {
-    EntityImpl<?> e = kernel.own(entity);
+    Entity e = base(entity);
     return object().call(own -> model(e.address()).view(kernel.nanoTime()));
   }
 
   @Override
   public FutureValue<OptionalLong> adapt(Entity entity, Adaptation adaptation) {
-    EntityImpl<?> e = kernel.own(entity);
+    Entity e = base(entity);
     requireNonNull(adaptation, "adaptation");
     return object().call(own -> adaptNow(e.address(), adaptation));
   }
@@ -177,7 +224,7 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
       return OptionalLong.empty();
     }
     long version = ++m.requestedVersion;
-    m.entity().object().send(new AdaptationRequest(address(), entity, version, adaptation));
+    sendTo(m.entity(), new AdaptationRequest(address(), entity, version, adaptation));
     publish(m);
     return OptionalLong.of(version);
   }

@@ -34,7 +34,9 @@ public interface Entity {
 
   /**
    * Its behavioral meta-entity, which receives its notifications; empty once it has been deleted
-   * from its meta and added to no other.
+   * from its meta and added to no other, and while its meta is in another runtime (decision 0024:
+   * its notifications go there all the same). For a handle on an entity of another runtime ({@link
+   * Kernel#remoteEntity}): the meta of this kernel that took it, if any.
    */
   Optional<BehavioralMeta> behavioralMeta();
 

@@ -7,10 +7,12 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.armgals.active.Address;
 import org.armgals.active.Event;
 import org.armgals.active.EventProcessor;
 import org.armgals.active.ObjectStoppedException;
 import org.armgals.active.ReactiveCycle;
+import org.armgals.active.Request;
 import org.armgals.representation.Activation;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.State;
@@ -26,8 +28,11 @@ import org.slf4j.LoggerFactory;
  * §4.2). It runs the activation, notifies the behavioral meta of each step as the notification
  * policy says, applies adaptation requests and harmonizes with its structural meta.
  *
+ * <p>Its behavioral meta is either of this runtime ({@link #meta} and its address) or of another
+ * one (its address only, decision 0024): notifications go to the address in both cases.
+ *
  * <p>Threading: everything but the volatile snapshots ({@link #current}, {@link #policy}, {@link
- * #meta}, {@link #appliedVersion}) is confined to the entity's object.
+ * #meta}, {@link #metaAddress}, {@link #appliedVersion}) is confined to the entity's object.
  */
 final class EntityServant<E extends State> implements EventProcessor, ReactiveCycle {
   private static final Logger LOG = LoggerFactory.getLogger(EntityServant.class);
@@ -39,6 +44,7 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
   private volatile E current;
   private volatile NotificationPolicy policy;
   private volatile @Nullable BehavioralMetaImpl meta;
+  private volatile @Nullable Address metaAddress;
   private volatile long appliedVersion;
 
   private long seq;
@@ -75,6 +81,10 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
     return meta;
   }
 
+  @Nullable Address metaAddress() {
+    return metaAddress;
+  }
+
   long appliedVersion() {
     return appliedVersion;
   }
@@ -100,6 +110,13 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
         }
       }
       case ResyncRequest r -> snapshot();
+      case Wire.Attach a -> attachRemote(a.sender());
+      case Wire.Detach d -> {
+        if (d.sender().equals(metaAddress)) {
+          meta = null;
+          metaAddress = null;
+        }
+      }
       default -> {
         if (!owner().handle(event)) {
           throw new IllegalArgumentException(
@@ -111,6 +128,17 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
         }
       }
     }
+  }
+
+  @Override
+  public @Nullable Object answer(Request<?> request) {
+    return switch (request) {
+      case Wire.Call c -> call(c.behavior(), c.input());
+      case Wire.Inspect i -> new Wire.Report(current.observe(), policy, appliedVersion);
+      default ->
+          throw new IllegalArgumentException(
+              "entity '" + owner().name() + "' cannot answer " + request + "; expected a call");
+    };
   }
 
   @Override
@@ -155,6 +183,21 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
   /** A behavioral meta takes this entity: it is told everything from a complete state on. */
   void attach(BehavioralMetaImpl next) {
     meta = next;
+    metaAddress = next.address();
+    snapshot();
+  }
+
+  /**
+   * A behavioral meta of another runtime takes this entity; a previous meta of this runtime lets it
+   * go (one of another runtime is not told: its model goes stale).
+   */
+  private void attachRemote(Address next) {
+    BehavioralMetaImpl previous = meta;
+    meta = null;
+    metaAddress = next;
+    if (previous != null) {
+      previous.deleteBaseLevelEntity(owner());
+    }
     snapshot();
   }
 
@@ -162,18 +205,19 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
   void detach(BehavioralMetaImpl previous) {
     if (meta == previous) {
       meta = null;
+      metaAddress = null;
     }
   }
 
   /** A failure of this entity's object (DESIGN semantics 8), on the object's thread. */
   void failed(@Nullable Event event, Throwable error) {
-    BehavioralMetaImpl m = meta;
+    Address m = metaAddress;
     if (m != null) {
       notify(
           m,
           new FailureEvent(
               owner().address(),
-              m.address(),
+              m,
               ++seq,
               error.getClass().getName(),
               error.getMessage() == null ? "" : error.getMessage(),
@@ -218,24 +262,24 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
 
   private void snapshot() {
     current = activation.state();
-    BehavioralMetaImpl m = meta;
+    Address m = metaAddress;
     if (m != null) {
       Map<String, Object> all = current.observe();
       lastObserved = project(grain(current, all, policy), policy);
-      notify(m, new StateEvent(owner().address(), m.address(), ++seq, null, all, true));
+      notify(m, new StateEvent(owner().address(), m, ++seq, null, all, true));
     }
   }
 
   private void stepped(Step<E> step, @Nullable Object input) {
     current = step.after();
     NotificationPolicy p = policy;
-    BehavioralMetaImpl m = meta;
+    Address m = metaAddress;
     Map<String, Object> observed = step.after().observe();
     Map<String, Object> grained = grain(step.after(), observed, p);
     if (m != null
         && p.actions()
         && (p.behaviors().isEmpty() || p.behaviors().contains(step.behavior()))) {
-      notify(m, new ActionEvent(owner().address(), m.address(), ++seq, step.behavior(), input));
+      notify(m, new ActionEvent(owner().address(), m, ++seq, step.behavior(), input));
     }
     if (m != null && p.states()) {
       Map<String, Object> projected = project(grained, p);
@@ -243,21 +287,17 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
         lastObserved = projected;
         boolean complete = projected.equals(observed);
         notify(
-            m,
-            new StateEvent(
-                owner().address(), m.address(), ++seq, step.behavior(), projected, complete));
+            m, new StateEvent(owner().address(), m, ++seq, step.behavior(), projected, complete));
       }
     }
     thresholds(m, p.thresholds(), observed);
     if (m != null && step.result() instanceof Reflect r) {
-      notify(
-          m,
-          new ReflectiveRequest(owner().address(), m.address(), ++seq, r.subject(), r.argument()));
+      notify(m, new ReflectiveRequest(owner().address(), m, ++seq, r.subject(), r.argument()));
     }
   }
 
   private void thresholds(
-      @Nullable BehavioralMetaImpl m, List<Threshold> watched, Map<String, Object> observed) {
+      @Nullable Address m, List<Threshold> watched, Map<String, Object> observed) {
     for (Threshold t : watched) {
       if (!(observed.get(t.property()) instanceof Number n)) {
         continue;
@@ -270,10 +310,7 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
       }
       below.put(t.name(), now);
       if (was != null && !was.equals(now) && m != null) {
-        notify(
-            m,
-            new ThresholdEvent(
-                owner().address(), m.address(), ++seq, t.name(), t.property(), v, now));
+        notify(m, new ThresholdEvent(owner().address(), m, ++seq, t.name(), t.property(), v, now));
       }
     }
   }
@@ -309,13 +346,18 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
     toLose = n;
   }
 
-  private void notify(BehavioralMetaImpl m, Notification n) {
+  private void notify(Address m, Notification n) {
     if (toLose > 0) {
       toLose--;
       return;
     }
+    BehavioralMetaImpl local = meta;
     try {
-      m.object().send(n);
+      if (local != null && local.address().equals(m)) {
+        local.object().send(n);
+      } else {
+        owner().kernel.runtime().ref(m).send(n);
+      }
     } catch (ObjectStoppedException e) {
       LOG.debug("notification {} not delivered: its meta is stopped", n);
     }

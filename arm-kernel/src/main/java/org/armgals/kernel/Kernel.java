@@ -3,6 +3,7 @@ package org.armgals.kernel;
 import java.util.Optional;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
+import org.armgals.active.JmsTransport;
 import org.armgals.kernel.spi.MetaPolicy;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.State;
@@ -60,6 +61,46 @@ public interface Kernel extends AutoCloseable {
 
   /** The kernel's entity named {@code name}, if there is one. */
   Optional<Entity> lookupEntity(String name);
+
+  /**
+   * A handle on an entity of another runtime's kernel (the distributed case of paper §2.3, decision
+   * 0024): a behavioral meta of this kernel can take it as a base entity ({@link
+   * BehavioralMeta#addBaseLevelEntity}), model it, filter and adapt it; {@link Entity#send} and
+   * {@link Entity#call} reach it through the runtime's transport. Both runtimes must allow the
+   * kernel's events on their transports ({@link #allowKernelEvents}).
+   *
+   * @param name the entity's name (in its own kernel)
+   * @param address its address, in another runtime
+   * @param kind a structural meta of this kernel describing the entity's kind: the same state space
+   *     and behaviors as the entity's own structural meta (behaviors are code and do not cross
+   *     runtimes; both sides know the kind), in which its models are built
+   * @throws IllegalArgumentException the address is of this runtime, or {@code kind} is not a
+   *     structural meta of this kernel
+   */
+  Entity remoteEntity(String name, Address address, StructuralMeta<?> kind);
+
+  /**
+   * {@link #remoteEntity} for the entity registered under {@code name} in the name service of
+   * {@code names} (registered there by its runtime with {@code names.register(entity.name(),
+   * entity.address())}). Blocks until the name service answers.
+   *
+   * @throws org.armgals.active.FutureTimeoutException no runtime answers for {@code name} within
+   *     the transport's reply timeout
+   */
+  Entity lookupRemote(JmsTransport names, String name, StructuralMeta<?> kind);
+
+  /**
+   * Adds every kernel event to the allow-list of {@code builder}, each on its topic: notifications
+   * ({@link StateEvent}, {@link ActionEvent}, {@link ThresholdEvent}, {@link FailureEvent}, {@link
+   * ReflectiveRequest}) and {@link AdaptationAck}s, which go to behavioral metas, on {@code
+   * arm/BMeta}; adaptation and resynchronization requests, stimuli, attachments and calls, which go
+   * to base entities, on {@code arm/Entity}; and the values they hold.
+   *
+   * @return {@code builder}
+   */
+  static JmsTransport.Builder allowKernelEvents(JmsTransport.Builder builder) {
+    return Wire.allow(builder);
+  }
 
   /**
    * Stops every entity of the kernel and unregisters their MBeans; the runtime itself is left

@@ -10,6 +10,7 @@ import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
+import org.armgals.active.JmsTransport;
 import org.armgals.kernel.spi.MetaPolicy;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.State;
@@ -236,6 +237,28 @@ final class KernelImpl implements Kernel {
   @Override
   public Optional<Entity> lookupEntity(String name) {
     return Optional.ofNullable(byName.get(requireNonNull(name, "name")));
+  }
+
+  @Override
+  public Entity remoteEntity(String name, Address address, StructuralMeta<?> kind) {
+    requireNonNull(name, "name");
+    requireNonNull(address, "address");
+    if (address.runtime().equals(runtime.name())) {
+      throw new IllegalArgumentException(
+          address + " is of this runtime (" + runtime.name() + "); expected one of another");
+    }
+    if (!(own(requireNonNull(kind, "kind")) instanceof StructuralMetaImpl<?> k)) {
+      throw new IllegalArgumentException(kind + " is not a structural meta of this kernel");
+    }
+    return new RemoteEntity(this, name, address, k);
+  }
+
+  @Override
+  public Entity lookupRemote(JmsTransport names, String name, StructuralMeta<?> kind) {
+    requireNonNull(names, "names");
+    requireNonNull(name, "name");
+    requireNonNull(kind, "kind");
+    return remoteEntity(name, names.lookup(name).getValue(), kind);
   }
 
   @Override

@@ -22,7 +22,7 @@ import org.jspecify.annotations.Nullable;
  * <p>Confined to its behavioral meta's object.
  */
 final class Model<S extends State> {
-  private final EntityImpl<S> entity;
+  private final Entity entity;
   private final StructuralMetaImpl<S> meta;
   private final Activation<S> activation;
   private final long retryNanos;
@@ -40,9 +40,14 @@ final class Model<S extends State> {
   long appliedVersion;
   Filter filter = Filter.ALL;
 
-  Model(EntityImpl<S> entity, Damping damping, Duration retry, long now) {
+  /**
+   * @param entity the base entity, of this runtime or a handle on one of another
+   * @param meta the structural meta whose space the model is in: the entity's own, or for an entity
+   *     of another runtime one of this kernel describing the same kind
+   */
+  Model(Entity entity, StructuralMetaImpl<S> meta, Damping damping, Duration retry, long now) {
     this.entity = requireNonNull(entity, "entity");
-    this.meta = entity.structuralMetaImpl();
+    this.meta = requireNonNull(meta, "meta");
     this.harmonizedWith = meta.behaviors();
     this.activation = meta.stateSpace().activate(meta.getInitialState(), harmonizedWith);
     this.retryNanos = retry.toNanos();
@@ -51,7 +56,7 @@ final class Model<S extends State> {
     this.lastAsk = now; // attaching asks for the first complete state
   }
 
-  EntityImpl<S> entity() {
+  Entity entity() {
     return entity;
   }
 

@@ -5,6 +5,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import org.armgals.active.ActiveRuntime;
+import org.armgals.active.Address;
 import org.armgals.active.Future;
 import org.armgals.representation.Behavior;
 import org.armgals.representation.Behaviors;
@@ -68,6 +69,24 @@ public interface StructuralMeta<S extends State> extends Entity {
    * org.armgals.representation.NoSuchBehaviorException} if there is none.
    */
   Future deleteBehavior(String name);
+
+  /**
+   * Sends every later {@link #addBehavior} and {@link #deleteBehavior} of this structural meta, by
+   * behavior name, to the structural meta at {@code twin}, in another runtime, which makes the same
+   * change from its {@linkplain #catalog catalog} and harmonizes its own instances (flows 4 and 5
+   * across runtimes, decision 0024). Typically this structural meta is the copy of a kind with
+   * which a behavioral meta models entities of another runtime, and {@code twin} is the kind of
+   * those entities. Behaviors are code: only their names cross.
+   */
+  Future mirrorTo(Address twin);
+
+  /**
+   * The behaviors a structural meta of another runtime may add to this one by name ({@link
+   * #mirrorTo}); empty (the default) refuses every remote addition. Deletions by name are always
+   * accepted. A refused modification is a failure of this structural meta, notified to its
+   * behavioral meta.
+   */
+  Future catalog(Behaviors<S> catalog);
 
   /** The state its instances start in. */
   S getInitialState();

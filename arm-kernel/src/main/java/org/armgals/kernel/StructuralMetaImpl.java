@@ -9,6 +9,8 @@ import java.util.Set;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Function;
 import java.util.function.UnaryOperator;
+import org.armgals.active.Address;
+import org.armgals.active.Event;
 import org.armgals.active.Future;
 import org.armgals.active.Mode;
 import org.armgals.active.ObjectStoppedException;
@@ -44,6 +46,8 @@ final class StructuralMetaImpl<S extends State> extends EntityImpl<FieldState>
   private final Object lock = new Object();
   private final List<EntityImpl<S>> instances = new CopyOnWriteArrayList<>();
   private volatile Behaviors<S> behaviors;
+  private final List<Address> twins = new CopyOnWriteArrayList<>();
+  private volatile @Nullable Behaviors<S> catalog;
   private @Nullable StructuralMetaImpl<?> superMeta;
 
   StructuralMetaImpl(
@@ -116,6 +120,7 @@ final class StructuralMetaImpl<S extends State> extends EntityImpl<FieldState>
             own -> {
               change(b -> b.with(behavior));
               own.call(KernelBehaviors.ADD_BEHAVIOR, behavior.name());
+              mirror(behavior.name(), true);
             });
   }
 
@@ -127,7 +132,58 @@ final class StructuralMetaImpl<S extends State> extends EntityImpl<FieldState>
             own -> {
               change(b -> b.without(behaviorName));
               own.call(KernelBehaviors.DELETE_BEHAVIOR, behaviorName);
+              mirror(behaviorName, false);
             });
+  }
+
+  @Override
+  public Future mirrorTo(Address twin) {
+    requireNonNull(twin, "twin");
+    if (twin.runtime().equals(kernel.runtime().name())) {
+      throw new IllegalArgumentException(
+          twin + " is of this runtime (" + kernel.runtime().name() + "); expected one of another");
+    }
+    return object().signal(own -> twins.add(twin));
+  }
+
+  @Override
+  public Future catalog(Behaviors<S> allowed) {
+    requireNonNull(allowed, "catalog");
+    return object().signal(own -> catalog = allowed);
+  }
+
+  /** Flow 4 to the twins of other runtimes: the change, by name; on this object. */
+  private void mirror(String behaviorName, boolean add) {
+    for (Address twin : twins) {
+      kernel.runtime().ref(twin).send(new Wire.Modify(address(), twin, behaviorName, add));
+    }
+  }
+
+  @Override
+  boolean handle(Event event) {
+    if (!(event instanceof Wire.Modify m)) {
+      return false;
+    }
+    if (m.add()) {
+      Behaviors<S> allowed = catalog;
+      Behavior<S> behavior = allowed == null ? null : allowed.lookup(m.behavior()).orElse(null);
+      if (behavior == null) {
+        throw new IllegalArgumentException(
+            name()
+                + " refuses to add '"
+                + m.behavior()
+                + "' for "
+                + m.sender()
+                + ": not in its catalog "
+                + (allowed == null ? "(none set)" : allowed.names()));
+      }
+      change(b -> b.with(behavior));
+      servant.call(KernelBehaviors.ADD_BEHAVIOR, m.behavior());
+    } else {
+      change(b -> b.without(m.behavior()));
+      servant.call(KernelBehaviors.DELETE_BEHAVIOR, m.behavior());
+    }
+    return true;
   }
 
   /** Flows 4 and 5: replaces the behaviors and harmonizes every instance; on this object. */

@@ -82,7 +82,11 @@ class ModelTest extends KernelFixture {
     Entity robot = robotKind().newEntity("r1", kernel.basicBehavioralMeta());
     Model<PState> model =
         new Model<>(
-            (EntityImpl<PState>) robot, Damping.none(), Duration.ofMillis(100), time.nanoTime());
+            robot,
+            ((EntityImpl<PState>) robot).structuralMetaImpl(),
+            Damping.none(),
+            Duration.ofMillis(100),
+            time.nanoTime());
     var a = robot.address();
     var m = kernel.basicBehavioralMeta().address();
     Map<String, Object> full = ROBOT.initialState().observe();

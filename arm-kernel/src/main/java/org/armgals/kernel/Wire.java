@@ -1,0 +1,107 @@
+package org.armgals.kernel;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.Map;
+import org.armgals.active.Address;
+import org.armgals.active.Event;
+import org.armgals.active.JmsTransport;
+import org.armgals.active.Request;
+import org.jspecify.annotations.Nullable;
+
+/**
+ * What the kernel sends between runtimes besides its public events (decision 0024): a behavioral
+ * meta's attachment and detachment of a base entity of another runtime, and the requests with which
+ * a {@link RemoteEntity} handle calls and inspects its entity. Their types stay package-private;
+ * {@link #allow} puts them, with the public events, on a transport's allow-list.
+ */
+final class Wire {
+  private Wire() {}
+
+  /** A behavioral meta ({@code sender}) takes the entity ({@code destination}). */
+  record Attach(Address sender, Address destination) implements Event {
+    Attach {
+      requireNonNull(sender, "sender");
+      requireNonNull(destination, "destination");
+    }
+  }
+
+  /** A behavioral meta ({@code sender}) lets go of the entity ({@code destination}). */
+  record Detach(Address sender, Address destination) implements Event {
+    Detach {
+      requireNonNull(sender, "sender");
+      requireNonNull(destination, "destination");
+    }
+  }
+
+  /**
+   * A structural modification from a structural meta ({@code sender}) to its twin in another
+   * runtime ({@code destination}): add the behavior of that name from the twin's catalog, or delete
+   * it.
+   */
+  record Modify(Address sender, Address destination, String behavior, boolean add)
+      implements Event {
+    Modify {
+      requireNonNull(sender, "sender");
+      requireNonNull(destination, "destination");
+      requireNonNull(behavior, "behavior");
+    }
+  }
+
+  /** {@link Entity#call} on an entity of another runtime; answers the behavior's result. */
+  record Call(
+      @Nullable Address sender, Address destination, String behavior, @Nullable Object input)
+      implements Request<@Nullable Object> {
+    Call {
+      requireNonNull(destination, "destination");
+      requireNonNull(behavior, "behavior");
+    }
+  }
+
+  /** Asks an entity of another runtime for a {@link Report}. */
+  record Inspect(@Nullable Address sender, Address destination) implements Request<Report> {
+    Inspect {
+      requireNonNull(destination, "destination");
+    }
+  }
+
+  /**
+   * What an entity says of itself to a handle in another runtime: its whole observed state, its
+   * notification policy and its applied version.
+   */
+  record Report(Map<String, Object> observation, NotificationPolicy policy, long appliedVersion) {
+    Report {
+      observation = Map.copyOf(requireNonNull(observation, "observation"));
+      requireNonNull(policy, "policy");
+    }
+  }
+
+  /** Allows every kernel event on {@code builder}, each on the topic of decision 0024. */
+  static JmsTransport.Builder allow(JmsTransport.Builder builder) {
+    requireNonNull(builder, "builder");
+    for (Class<? extends Event> toMeta :
+        java.util.List.<Class<? extends Event>>of(
+            StateEvent.class,
+            ActionEvent.class,
+            ThresholdEvent.class,
+            FailureEvent.class,
+            ReflectiveRequest.class,
+            AdaptationAck.class)) {
+      builder.allow(JmsTransport.Topic.BMETA, toMeta);
+    }
+    builder.allow(JmsTransport.Topic.SMETA, Modify.class);
+    return builder.allow(
+        AdaptationRequest.class,
+        ResyncRequest.class,
+        Stimulus.class,
+        Attach.class,
+        Detach.class,
+        Call.class,
+        Inspect.class,
+        Report.class,
+        Adaptation.SetNotification.class,
+        Adaptation.ApplyBehavior.class,
+        NotificationPolicy.class,
+        Threshold.class);
+  }
+}

@@ -1,0 +1,124 @@
+package org.armgals.kernel;
+
+import java.time.Duration;
+import java.util.function.Predicate;
+import org.armgals.active.ActiveRuntime;
+import org.armgals.active.Address;
+import org.armgals.active.EmbeddedBroker;
+import org.armgals.active.JmsTransport;
+import org.armgals.representation.p.PState;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.TestInfo;
+
+/**
+ * Two runtimes on one embedded Artemis broker, each with its own JMS transport and kernel, and the
+ * battery robot's kind known to both (decision 0024); a fresh topic prefix per test.
+ */
+abstract class TwoRuntimesFixture {
+  static final Duration WAIT = Duration.ofSeconds(10);
+  static final java.util.concurrent.atomic.AtomicInteger RUNS =
+      new java.util.concurrent.atomic.AtomicInteger();
+  static EmbeddedBroker broker;
+
+  JmsTransport baseTransport;
+  JmsTransport metaTransport;
+  ActiveRuntime baseRuntime;
+  ActiveRuntime metaRuntime;
+  Kernel baseKernel;
+  Kernel metaKernel;
+  StructuralMeta<PState> baseRobots;
+  StructuralMeta<PState> metaRobots;
+  final ManualTime time = new ManualTime();
+
+  @BeforeAll
+  static void startBroker() {
+    broker = EmbeddedBroker.start();
+  }
+
+  @AfterAll
+  static void stopBroker() {
+    broker.close();
+  }
+
+  @BeforeEach
+  void twoRuntimes(TestInfo test) {
+    String prefix =
+        "kernel-" + test.getTestMethod().orElseThrow().getName() + "-" + RUNS.incrementAndGet();
+    baseTransport = transport(prefix);
+    metaTransport = transport(prefix);
+    baseRuntime = runtime("base", baseTransport);
+    metaRuntime = runtime("meta", metaTransport);
+    KernelOptions options = new KernelOptions(time, Duration.ofMillis(100), false);
+    baseKernel = StructuralMeta.bootstrap(baseRuntime, options);
+    metaKernel = StructuralMeta.bootstrap(metaRuntime, options);
+    // Behaviors are code: both sides know the kind (decision 0024).
+    baseRobots =
+        baseKernel.newStructuralMeta("Robot", KernelFixture.ROBOT, KernelFixture.robotBehaviors());
+    metaRobots =
+        metaKernel.newStructuralMeta("Robot", KernelFixture.ROBOT, KernelFixture.robotBehaviors());
+  }
+
+  @AfterEach
+  void closeAll() {
+    baseKernel.close();
+    metaKernel.close();
+    baseRuntime.close();
+    metaRuntime.close();
+    baseTransport.close();
+    metaTransport.close();
+  }
+
+  static JmsTransport transport(String prefix) {
+    return Kernel.allowKernelEvents(JmsTransport.builder().broker(broker.inVmUrl()).prefix(prefix))
+        .build();
+  }
+
+  static ActiveRuntime runtime(String name, JmsTransport t) {
+    return ActiveRuntime.builder().name(name).workers(2).jmx(false).transport(t).build();
+  }
+
+  /** A robot of the base runtime, registered in the name service, as the meta runtime finds it. */
+  Entity robot(String name, NotificationPolicy policy) {
+    Entity robot =
+        baseRobots.newEntity(
+            name,
+            baseKernel.basicBehavioralMeta(),
+            EntityOptions.defaults().withNotification(policy));
+    baseTransport.register(name, robot.address());
+    return robot;
+  }
+
+  /** Returns once the meta's model of {@code entity} satisfies {@code p}: its objects' guard. */
+  static ModelView awaitModel(BehavioralMeta meta, Entity entity, Predicate<ModelView> p) {
+    BehavioralMetaImpl m = (BehavioralMetaImpl) meta;
+    Address a = entity.address();
+    m.object()
+        .callWhen(
+            s -> {
+              BehavioralMetaImpl.Published published = m.views.get(a);
+              return published != null && p.test(published.view());
+            },
+            s -> Boolean.TRUE)
+        .getValue(WAIT);
+    return meta.model(entity).getValue(WAIT);
+  }
+
+  /** Returns once the base entity has applied the adaptation {@code version}. */
+  static void awaitApplied(Entity base, long version) {
+    ((EntityImpl<?>) base)
+        .object()
+        .callWhen(s -> s.appliedVersion() >= version, s -> Boolean.TRUE)
+        .getValue(WAIT);
+  }
+
+  /** Returns once {@code base} has (or has lost) the behavior {@code name}. */
+  static void awaitBehavior(Entity base, String name, boolean present) {
+    ((EntityImpl<?>) base)
+        .object()
+        .callWhen(s -> s.behaviors().lookup(name).isPresent() == present, s -> Boolean.TRUE)
+        .getValue(WAIT);
+  }
+}
