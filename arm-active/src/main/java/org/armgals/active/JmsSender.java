@@ -10,7 +10,9 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.LongAdder;
+import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Function;
 import org.armgals.active.JmsTransport.Topic;
 import org.slf4j.Logger;
@@ -22,6 +24,12 @@ import org.slf4j.LoggerFactory;
  * that were queued together travel in one message, up to {@code maxBatch}; a message that is not
  * batchable (a request) first sends the events queued before it on its route, so every route keeps
  * its queue order. Routes do not wait for each other.
+ *
+ * <p>A request, an answer or a failure is sent on the caller's own thread when nothing is queued or
+ * being sent and the session is free ({@link #submit}): a round trip then costs no hand-over to
+ * this thread on either side. The session is used by one thread at a time, under {@link #lock};
+ * {@link #unsent} counts what was queued and is not sent yet, so a message never overtakes one
+ * queued before it.
  */
 final class JmsSender implements Runnable {
   private static final Logger LOG = LoggerFactory.getLogger(JmsSender.class);
@@ -37,6 +45,8 @@ final class JmsSender implements Runnable {
   private final Map<Topic, jakarta.jms.Topic> destinations = new EnumMap<>(Topic.class);
   private final List<Outbound> drained = new ArrayList<>();
   private final Map<String, List<Outbound>> pending = new LinkedHashMap<>();
+  private final ReentrantLock lock = new ReentrantLock();
+  private final AtomicLong unsent = new AtomicLong();
 
   JmsSender(
       BlockingQueue<Outbound> queue,
@@ -62,13 +72,61 @@ final class JmsSender implements Runnable {
     }
   }
 
+  /**
+   * Sends {@code o} now, on the calling thread, if it is a request, an answer or a failure, nothing
+   * is waiting to be sent and no other thread is using the session; queues it for the sender thread
+   * otherwise.
+   *
+   * @throws InterruptedException if interrupted while the queue is full
+   */
+  void submit(Outbound o) throws InterruptedException {
+    if (isRoundTrip(o) && unsent.get() == 0 && lock.tryLock()) {
+      try {
+        if (unsent.get() == 0) {
+          send(List.of(o));
+          return;
+        }
+      } finally {
+        lock.unlock();
+      }
+    }
+    unsent.incrementAndGet();
+    try {
+      queue.put(o);
+    } catch (InterruptedException e) {
+      unsent.decrementAndGet();
+      throw e;
+    }
+  }
+
+  /**
+   * Requests and their answers (and failures) may go on the caller's thread; everything else keeps
+   * the sender thread's order, which a filter swap's markers rely on.
+   */
+  private static boolean isRoundTrip(Outbound o) {
+    if (o == Outbound.STOP || o.batchable()) {
+      return false;
+    }
+    Object kind = o.properties().get(WireProperties.MSG);
+    return WireProperties.MSG_REQUEST.equals(kind)
+        || WireProperties.MSG_ANSWER.equals(kind)
+        || WireProperties.MSG_FAILURE.equals(kind);
+  }
+
   @Override
   public void run() {
     try {
       while (true) {
         drained.add(queue.take());
         queue.drainTo(drained);
-        boolean go = sendDrained();
+        boolean go;
+        lock.lock();
+        try {
+          go = sendDrained();
+        } finally {
+          lock.unlock();
+        }
+        unsent.addAndGet(-drained.size());
         drained.clear();
         if (!go) {
           return;
@@ -77,10 +135,13 @@ final class JmsSender implements Runnable {
     } catch (InterruptedException e) {
       Thread.currentThread().interrupt();
     } finally {
+      lock.lock();
       try {
         session.close();
       } catch (JMSException e) {
         LOG.debug("closing the producing session", e);
+      } finally {
+        lock.unlock();
       }
     }
   }

@@ -58,6 +58,7 @@ final class JmsTransportImpl implements JmsTransport {
   private final PendingAnswers pending;
   private final BlockingQueue<Outbound> outbound = new ArrayBlockingQueue<>(QUEUE);
   private final Thread sender;
+  private final JmsSender sending;
   private final ScheduledExecutorService sweeper;
   private final AtomicLong seq = new AtomicLong();
   private final LongAdder sent = new LongAdder();
@@ -94,21 +95,22 @@ final class JmsTransportImpl implements JmsTransport {
     producer.setDeliveryMode(jakarta.jms.DeliveryMode.NON_PERSISTENT);
     producer.setDisableMessageID(true);
     producer.setDisableMessageTimestamp(true);
+    this.sending =
+        new JmsSender(
+            outbound,
+            producing,
+            producer,
+            this::topicName,
+            b.maxBatch,
+            b.maxMessageBytes,
+            sent,
+            batches,
+            node);
     this.sender =
         Thread.ofPlatform()
             .name("armgals-jms-sender-" + node.substring(0, 8))
             .daemon(true)
-            .unstarted(
-                new JmsSender(
-                    outbound,
-                    producing,
-                    producer,
-                    this::topicName,
-                    b.maxBatch,
-                    b.maxMessageBytes,
-                    sent,
-                    batches,
-                    node));
+            .unstarted(sending);
     long period = Math.max(10, Math.min(1_000, b.replyTimeout.toMillis() / 4));
     this.sweeper =
         Executors.newSingleThreadScheduledExecutor(
@@ -404,7 +406,7 @@ final class JmsTransportImpl implements JmsTransport {
   private void enqueue(Outbound o) {
     checkOpen();
     try {
-      outbound.put(o);
+      sending.submit(o);
     } catch (InterruptedException e) {
       Thread.currentThread().interrupt();
       throw new ActiveException("interrupted while the JMS transport's send queue was full");
@@ -628,7 +630,7 @@ final class JmsTransportImpl implements JmsTransport {
       return;
     }
     try {
-      outbound.put(Outbound.STOP);
+      sending.submit(Outbound.STOP);
       sender.join(10_000);
     } catch (InterruptedException e) {
       Thread.currentThread().interrupt();
