@@ -5,6 +5,8 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.time.Duration;
 import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.TimeSource;
 import org.armgals.gals.Island;
@@ -223,6 +225,37 @@ class RobotOnIslandTest {
       assertThat(slow.trace())
           .contains("slow 1 pong in [Num[value=7], Num[value=7], Num[value=7]]");
     }
+  }
+
+  @Test
+  void onARealTimeIslandARobotRunsAtTheIslandsPaceAndAdaptsThere() throws InterruptedException {
+    CountDownLatch twenty = new CountDownLatch(20);
+    Island island =
+        Island.builder("rt", runtime).period(Duration.ofMillis(1)).tracing(true).jmx(false).build();
+    LinkedRobot robot = LinkedRobot.create("r", TimeSource.system());
+    try {
+      robot.bmeta(
+          (report, requests) -> {
+            if (report.cycle() == 5) {
+              requests.accept(new Adaptation.ChangeModule(robot.inbox(100)));
+            }
+            twenty.countDown();
+          });
+      robot.start(island);
+      island.start();
+      assertThat(twenty.await(10, TimeUnit.SECONDS)).isTrue();
+    } finally {
+      island.close(); // waits for the cycle in progress
+    }
+
+    IslandStats stats = island.stats();
+    assertThat(robot.cycles()).isEqualTo(stats.instants()).isGreaterThanOrEqualTo(20);
+    assertThat(stats.adaptations()).isEqualTo(1);
+    assertThat(stats.jitterMax()).isGreaterThanOrEqualTo(stats.jitterP50());
+    // requested in cycle 5, applied at the beginning of cycle 6 (the island default)
+    assertThat(robot.sums.subList(0, 5)).containsOnly(0);
+    assertThat(robot.sums.subList(5, 20)).containsOnly(100);
+    assertThat(island.trace()).anyMatch(l -> l.endsWith(" r adapt changeModule inbox"));
   }
 
   /** A perceptor that takes {@code cost} of the test's time. */
