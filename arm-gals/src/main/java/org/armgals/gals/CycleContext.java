@@ -47,4 +47,10 @@ public interface CycleContext<S> {
 
   /** Adds a line to the island's per-cycle trace (when tracing is on; otherwise does nothing). */
   void trace(String line);
+
+  /**
+   * Whether the island keeps its trace: a reaction checks it before building an expensive line for
+   * {@link #trace}.
+   */
+  boolean tracing();
 }

@@ -264,5 +264,10 @@ final class EntityImpl<S> implements ReactiveEntity<S>, EventProcessor, Reactive
         traceLines.add(reaction + ": " + line);
       }
     }
+
+    @Override
+    public boolean tracing() {
+      return island.tracing();
+    }
   }
 }

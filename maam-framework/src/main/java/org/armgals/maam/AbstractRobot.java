@@ -7,11 +7,11 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentLinkedQueue;
-import org.armgals.active.ActiveObject;
-import org.armgals.active.ActiveRuntime;
-import org.armgals.active.Clock;
-import org.armgals.active.ReactiveCycle;
 import org.armgals.active.TimeSource;
+import org.armgals.gals.CycleContext;
+import org.armgals.gals.Island;
+import org.armgals.gals.ReactiveEntity;
+import org.armgals.kernel.AdaptationPoint;
 import org.armgals.maam.spi.Body;
 import org.armgals.maam.spi.RobotErrorHandler;
 import org.jspecify.annotations.Nullable;
@@ -23,13 +23,19 @@ import org.jspecify.annotations.Nullable;
  * cycle ended, notifies the {@link BMetaRobot} if there is one, and applies the requested
  * adaptations at its {@link AdaptationPoint}.
  *
- * <p>A cycle is a method: {@link #start} runs it on a clock as a synchronous active object; tests
- * and simulators call {@link #cycle} by hand.
+ * <p>A cycle is a method: tests and simulators call {@link #cycle} by hand; {@link #start} makes
+ * the robot a reactive entity of an arm-gals {@link Island} (paper §5.3), which runs one cycle per
+ * release. On an island the island rules the cycle: its {@link Island#adaptationPoint() adaptation
+ * point} replaces the robot's own, requested adaptations are applied by the island between two
+ * instants (traced, and timed against its period in its {@link org.armgals.gals.IslandStats}), each
+ * cycle adds a line with its emissions to the island's trace, and the robot talks to entities of
+ * its own or other islands through {@link #received} and {@link #emit}.
  *
- * <p>Threading: one thread at a time runs {@link #cycle} (the clock's release gives the
- * happens-before between two cycles). The registration methods ({@link #addSchema} and the others)
- * are for the constructor, for the thread stepping the robot between cycles, or for the robot's own
- * modules; any other thread asks through {@link #request}, which is thread-safe.
+ * <p>Threading: one thread at a time runs {@link #cycle} (on an island, the release gives the
+ * happens-before between two cycles and the adaptations between them). The registration methods
+ * ({@link #addSchema} and the others) are for the constructor, for the thread stepping the robot
+ * between cycles, or for the robot's own modules; any other thread asks through {@link #request},
+ * which is thread-safe.
  */
 public abstract class AbstractRobot {
 
@@ -43,11 +49,14 @@ public abstract class AbstractRobot {
   private final List<CycleReport.Rejected> rejected = new ArrayList<>();
   private final List<String> failedModules = new ArrayList<>();
   private final Plan.Failures failures = this::moduleFailed;
+  private final Object hosting = new Object();
 
   private AdaptationPoint adaptationPoint = AdaptationPoint.END_OF_CYCLE;
   private @Nullable BMetaRobot behavioralMeta;
   private RobotErrorHandler errorHandler = RobotErrorHandler.logging();
   private @Nullable Plan plan;
+  private volatile @Nullable ReactiveEntity<AbstractRobot> entity;
+  private @Nullable CycleContext<AbstractRobot> context;
   private long planVersion = -1;
   private long cycles;
   private long errors;
@@ -138,16 +147,41 @@ public abstract class AbstractRobot {
   }
 
   /**
-   * Where in the cycle requested adaptations are applied; {@link AdaptationPoint#END_OF_CYCLE} by
-   * default.
+   * Where in the cycle requested adaptations are applied: {@link AdaptationPoint#END_OF_CYCLE} by
+   * default; on an island, the island's.
    */
   public final AdaptationPoint adaptationPoint() {
-    return adaptationPoint;
+    ReactiveEntity<AbstractRobot> e = entity;
+    return e == null ? adaptationPoint : e.island().adaptationPoint();
   }
 
-  /** Sets where in the cycle requested adaptations are applied. */
+  /**
+   * Sets where in the cycle requested adaptations are applied when the robot is stepped by hand.
+   *
+   * @param point {@link AdaptationPoint#BEGIN_OF_CYCLE} or {@link AdaptationPoint#END_OF_CYCLE}: a
+   *     robot adapts only between cycles
+   * @throws IllegalArgumentException {@link AdaptationPoint#ON_ARRIVAL}
+   * @throws IllegalStateException the robot runs on an island, whose point rules
+   */
   protected final void setAdaptationPoint(AdaptationPoint point) {
-    this.adaptationPoint = requireNonNull(point, "point");
+    requireNonNull(point, "point");
+    if (point == AdaptationPoint.ON_ARRIVAL) {
+      throw new IllegalArgumentException(
+          "adaptation point of robot "
+              + name
+              + " must be BEGIN_OF_CYCLE or END_OF_CYCLE, was "
+              + point);
+    }
+    ReactiveEntity<AbstractRobot> e = entity;
+    if (e != null) {
+      throw new IllegalStateException(
+          "robot "
+              + name
+              + " runs on island "
+              + e.island().name()
+              + ", whose adaptation point rules");
+    }
+    this.adaptationPoint = point;
   }
 
   /** Sets the behavioral meta notified at the end of each cycle. */
@@ -163,22 +197,95 @@ public abstract class AbstractRobot {
   /**
    * Asks for {@code adaptation}, applied at the next {@link AdaptationPoint}: at the beginning of
    * the next cycle, or at the end of the current or next one. Any thread; requests are applied in
-   * the order they were made.
+   * the order they were made. On an island it is an adaptation request of the robot's entity
+   * ({@link ReactiveEntity#adapt}); requests made before {@link #start} go to the island then.
    */
   public final void request(Adaptation adaptation) {
-    requests.add(requireNonNull(adaptation, "adaptation"));
+    requireNonNull(adaptation, "adaptation");
+    synchronized (hosting) {
+      ReactiveEntity<AbstractRobot> e = entity;
+      if (e == null) {
+        requests.add(adaptation);
+      } else {
+        IslandHost.request(e, adaptation);
+      }
+    }
   }
 
   /**
-   * One cycle: adaptations if at the beginning, every module in schedule order, {@link
+   * One cycle, by hand: adaptations if at the beginning, every module in schedule order, {@link
    * Body#endCycle}, the behavioral meta's notification, adaptations if at the end.
+   *
+   * @throws IllegalStateException the robot runs on an island, which releases its cycles
    */
   public final void cycle() {
-    long number = ++cycles;
-    long now = time.nanoTime();
+    ReactiveEntity<AbstractRobot> e = entity;
+    if (e != null) {
+      throw new IllegalStateException(
+          "robot " + name + " runs on island " + e.island().name() + ", which releases its cycles");
+    }
     if (adaptationPoint == AdaptationPoint.BEGIN_OF_CYCLE) {
       adapt();
     }
+    react();
+    if (adaptationPoint == AdaptationPoint.END_OF_CYCLE) {
+      adapt();
+    }
+  }
+
+  /**
+   * One cycle released by the robot's island: the reaction of its entity. The island applies the
+   * adaptations; the cycle's emissions (and the adaptations it saw rejected) go to its trace.
+   */
+  final void islandCycle(CycleContext<AbstractRobot> cycle) {
+    context = cycle;
+    try {
+      boolean tracing = cycle.tracing();
+      if (tracing) {
+        for (CycleReport.Rejected r : rejected) {
+          cycle.trace("rejected " + IslandHost.describe(r.adaptation()) + ": " + r.reason());
+        }
+      }
+      Plan current = react();
+      if (tracing) {
+        cycle.trace("cycle " + cycles + " " + current.emissions());
+      }
+    } finally {
+      context = null;
+    }
+  }
+
+  /**
+   * The payloads the robot's entity took at this release, ordered as {@link CycleContext#inputs()};
+   * empty when the robot is stepped by hand. For its modules, during a cycle.
+   */
+  public final List<Object> received() {
+    CycleContext<AbstractRobot> c = context;
+    return c == null ? List.of() : c.inputs();
+  }
+
+  /**
+   * Sends {@code payload} to {@code target}, a reactive entity (another robot's, or any other) of
+   * this island or another: it takes it at its next release (see {@link CycleContext#emit}). For
+   * the robot's modules, during a cycle on an island.
+   *
+   * @throws IllegalStateException not during a cycle of the robot on an island
+   */
+  public final void emit(ReactiveEntity<?> target, Object payload) {
+    requireNonNull(target, "target");
+    requireNonNull(payload, "payload");
+    CycleContext<AbstractRobot> c = context;
+    if (c == null) {
+      throw new IllegalStateException(
+          "robot " + name + " emits only during one of its cycles on an island");
+    }
+    c.emit(target, payload);
+  }
+
+  /** Every module in schedule order, the body's end of cycle, the behavioral meta. */
+  private Plan react() {
+    long number = ++cycles;
+    long now = time.nanoTime();
     Plan current = plan();
     current.run(number, now, body, failures);
     body.endCycle();
@@ -192,19 +299,35 @@ public abstract class AbstractRobot {
     applied.clear();
     rejected.clear();
     failedModules.clear();
-    if (adaptationPoint == AdaptationPoint.END_OF_CYCLE) {
-      adapt();
-    }
+    return current;
   }
 
   /**
-   * Runs this robot on {@code clock} as a synchronous object of {@code runtime}: one cycle per
-   * release. Stop the returned object to stop the robot.
+   * Makes this robot a reactive entity of {@code island}, named as the robot, with one reaction
+   * that runs a cycle: from the island's next release, one cycle per release. The robot is then no
+   * longer stepped by hand; closing the island stops it.
+   *
+   * @return its entity: send it events, query its state, or name it as the target of another
+   *     robot's {@link #emit}
+   * @throws IllegalStateException the robot already runs on an island, or {@code island} is closed
+   * @throws IllegalArgumentException the island has an entity of the robot's name
    */
-  public final ActiveObject<ReactiveCycle> start(ActiveRuntime runtime, Clock clock) {
-    requireNonNull(runtime, "runtime");
-    requireNonNull(clock, "clock");
-    return ActiveObjectHost.start(this, runtime, clock);
+  public final ReactiveEntity<AbstractRobot> start(Island island) {
+    requireNonNull(island, "island");
+    synchronized (hosting) {
+      ReactiveEntity<AbstractRobot> e = entity;
+      if (e != null) {
+        throw new IllegalStateException(
+            "robot " + name + " already runs on island " + e.island().name());
+      }
+      e = IslandHost.start(this, island);
+      Adaptation next;
+      while ((next = requests.poll()) != null) {
+        IslandHost.request(e, next);
+      }
+      entity = e;
+      return e;
+    }
   }
 
   /** The cycles run so far. */
@@ -224,7 +347,7 @@ public abstract class AbstractRobot {
 
   private void notify(BMetaRobot bmeta, CycleReport report) {
     try {
-      bmeta.onCycle(report, requests::add);
+      bmeta.onCycle(report, this::request);
     } catch (Exception e) {
       errors++;
       errorHandler.onError(name, "bmeta", e);
@@ -234,21 +357,27 @@ public abstract class AbstractRobot {
   private void adapt() {
     Adaptation next;
     while ((next = requests.poll()) != null) {
-      try {
-        long before = meta.version();
-        meta.apply(next);
-        if (next instanceof Adaptation.ChangeModule change
-            && plan != null
-            && planVersion == before) {
-          plan.replace(change.replacement());
-          planVersion = meta.version();
-        }
-        applied.add(next);
-      } catch (IllegalArgumentException e) {
-        rejections++;
-        rejected.add(new CycleReport.Rejected(next, String.valueOf(e.getMessage())));
-        errorHandler.onError(name, "adaptation " + next, e);
+      apply(next);
+    }
+  }
+
+  /**
+   * Applies one requested adaptation, or records its rejection for the next {@link CycleReport}.
+   * Between cycles, on the thread that steps the robot (on an island: the island's).
+   */
+  final void apply(Adaptation next) {
+    try {
+      long before = meta.version();
+      meta.apply(next);
+      if (next instanceof Adaptation.ChangeModule change && plan != null && planVersion == before) {
+        plan.replace(change.replacement());
+        planVersion = meta.version();
       }
+      applied.add(next);
+    } catch (IllegalArgumentException e) {
+      rejections++;
+      rejected.add(new CycleReport.Rejected(next, String.valueOf(e.getMessage())));
+      errorHandler.onError(name, "adaptation " + next, e);
     }
   }
 

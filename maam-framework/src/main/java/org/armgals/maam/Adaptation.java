@@ -7,8 +7,8 @@ import java.util.List;
 /**
  * A change to a robot's reactive program, requested by its meta level (paper §5.4: {@code
  * setScheduling} and {@code changeModule} method requests) and applied by the robot at its {@link
- * AdaptationPoint}. A request that would break the program (a cycle, an unknown name) is rejected
- * whole: the program stays as it was.
+ * org.armgals.kernel.AdaptationPoint}. A request that would break the program (a cycle, an unknown
+ * name) is rejected whole: the program stays as it was.
  */
 public sealed interface Adaptation {
 

@@ -10,7 +10,7 @@ import java.util.function.Function;
 /**
  * The behavioral meta level of a robot (paper §5.4, class {@code BMetaRobot}): notified at the end
  * of every cycle, it integrates the {@link CycleReport} into its model of the robot and may request
- * {@link Adaptation}s, which the robot applies at its {@link AdaptationPoint}.
+ * {@link Adaptation}s, which the robot applies at its {@link org.armgals.kernel.AdaptationPoint}.
  *
  * <p>Threading: called on the robot's thread, after the cycle's modules, once per cycle; its time
  * counts in the cycle's. It may keep its model in fields.

@@ -9,8 +9,9 @@
  * them. The {@link org.armgals.maam.Scheduler} orders the modules; a {@link
  * org.armgals.maam.MetaRobot} holds the robot's program and reschedules it; a {@link
  * org.armgals.maam.BMetaRobot} is notified every cycle and asks for adaptations, applied at the
- * {@link org.armgals.maam.AdaptationPoint} the robot chose. The body a robot reads and drives is
- * the SPI in {@code org.armgals.maam.spi}.
+ * {@link org.armgals.kernel.AdaptationPoint} the robot chose, or its island's: {@link
+ * org.armgals.maam.AbstractRobot#start} makes a robot a reactive entity of an arm-gals island. The
+ * body a robot reads and drives is the SPI in {@code org.armgals.maam.spi}.
  */
 @NullMarked
 package org.armgals.maam;

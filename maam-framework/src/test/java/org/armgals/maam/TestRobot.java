@@ -3,6 +3,7 @@ package org.armgals.maam;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import org.armgals.kernel.AdaptationPoint;
 import org.armgals.maam.spi.ActuatorKey;
 import org.armgals.maam.spi.FakeBody;
 import org.armgals.maam.spi.SensorKey;

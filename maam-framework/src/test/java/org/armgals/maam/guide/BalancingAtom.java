@@ -2,8 +2,8 @@ package org.armgals.maam.guide;
 
 import java.time.Duration;
 import org.armgals.active.TimeSource;
+import org.armgals.kernel.AdaptationPoint;
 import org.armgals.maam.AbstractRobot;
-import org.armgals.maam.AdaptationPoint;
 import org.armgals.maam.PortRef;
 import org.armgals.maam.Schema;
 import org.armgals.maam.Suppressor;

@@ -3,11 +3,8 @@ package org.armgals.maam.guide;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.time.Duration;
-import org.armgals.active.ActiveObject;
 import org.armgals.active.ActiveRuntime;
-import org.armgals.active.Clock;
-import org.armgals.active.ManualClock;
-import org.armgals.active.ReactiveCycle;
+import org.armgals.gals.Island;
 import org.armgals.maam.spi.Atom;
 import org.armgals.maam.spi.FakeBody;
 import org.armgals.maam.spi.Leg;
@@ -15,7 +12,7 @@ import org.armgals.maam.spi.LegAngles;
 import org.armgals.maam.spi.Tilt;
 import org.junit.jupiter.api.Test;
 
-/** The guide's robot, run as a synchronous active object on a manual clock with a fake atom. */
+/** The guide's robot, run as a reactive entity of an island stepped by hand, with a fake atom. */
 class BalancingAtomTest {
 
   @Test
@@ -23,10 +20,11 @@ class BalancingAtomTest {
     FakeBody body = FakeBody.atom("atom-1", 100.0);
     // tag::run[]
     try (ActiveRuntime runtime = ActiveRuntime.create();
-        ManualClock clock = Clock.manual(Duration.ofMillis(10))) {
-      BalancingAtom robot = new BalancingAtom(body, clock);
-      ActiveObject<ReactiveCycle> running = robot.start(runtime, clock);
-      clock.step(3); // three cycles, level
+        Island island = Island.builder("atoms", runtime).period(Duration.ofMillis(10)).build()) {
+      // virtual time: the island's instant times its period
+      BalancingAtom robot = new BalancingAtom(body, () -> island.instant() * 10_000_000L);
+      robot.start(island);
+      island.step(3); // three cycles, level
       // end::run[]
       assertThat(body.cycles()).isEqualTo(3);
       assertThat(robot.schedule().names())
@@ -34,21 +32,20 @@ class BalancingAtomTest {
       assertThat(body.lastCommand(Atom.target(Leg.PZ))).contains(new LegAngles(0.2, 0));
 
       body.set(Atom.TILT, new Tilt(0.25, 0));
-      clock.step();
+      island.step();
       assertThat(body.lastCommand(Atom.target(Leg.MX))).contains(new LegAngles(0.7, 0));
 
       body.set(Atom.BATTERY, 5.0);
-      clock.step();
+      island.step();
       assertThat(body.lastCommand(Atom.target(Leg.MX))).contains(new LegAngles(0, 0));
 
       body.set(Atom.BATTERY, 50.0);
-      clock.step(5); // 10..50 ms after the last low reading: still resting
+      island.step(5); // 10..50 ms after the last low reading: still resting
       assertThat(body.lastCommand(Atom.target(Leg.MX))).contains(new LegAngles(0, 0));
-      clock.step();
+      island.step();
       assertThat(body.lastCommand(Atom.target(Leg.MX))).contains(new LegAngles(0.7, 0));
       assertThat(robot.cycles()).isEqualTo(11);
       assertThat(robot.errors()).isZero();
-      running.stop();
     }
   }
 }
