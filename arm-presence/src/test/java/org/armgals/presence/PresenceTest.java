@@ -110,12 +110,19 @@ class PresenceTest {
   @Test
   void aListenerThatThrowsIsCountedAndTheOthersStillHear() throws Exception {
     Heard heard = new Heard();
+    // The throwing listener comes first: listeners are called in order on one thread, so once
+    // the second one has heard an event, the first one's failure on it has been counted.
     try (Presence a =
-            builder("throw", "a", heard)
+            Presence.builder()
+                .broker(broker.inVmUrl())
+                .prefix("throw")
+                .runtime("a")
+                .period(PERIOD)
                 .listener(
                     event -> {
                       throw new IllegalStateException("listener failure on purpose");
                     })
+                .listener(heard.events::add)
                 .build();
         Presence b = builder("throw", "b", new Heard()).build()) {
       assertThat(heard.next()).isEqualTo(new Joined(b.runtime()));
