@@ -2,6 +2,7 @@ package org.armgals.gals;
 
 import java.time.Duration;
 import java.util.List;
+import org.armgals.active.Address;
 import org.armgals.active.ServantFunction;
 import org.jspecify.annotations.Nullable;
 
@@ -32,6 +33,20 @@ public interface CycleContext<S> {
    * target's buffer is full its oldest event is dropped.
    */
   void emit(ReactiveEntity<?> target, Object payload);
+
+  /**
+   * Sends {@code payload} to the reactive entity at {@code target}, in this runtime or in another
+   * one on the same broker (an address from {@link ReactiveEntity#address()}, passed along or found
+   * with {@code JmsTransport.lookup}); it is taken at the next release of the target's island after
+   * it arrives, in send order from this entity. To another runtime the payload is encoded on this
+   * thread, so {@link Emission} and the payload's type must be on the transport's allow-list. Never
+   * blocks.
+   *
+   * @throws IllegalArgumentException the target is in another runtime and the payload's type is not
+   *     on the allow-list (the message names it), or this runtime has no transport
+   * @throws org.armgals.active.ObjectStoppedException the target is in this runtime and stopped
+   */
+  void emit(Address target, Object payload);
 
   /**
    * Asks {@code target} for a value: {@code query} runs on the target's state when the target takes

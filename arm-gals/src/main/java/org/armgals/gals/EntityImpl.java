@@ -237,6 +237,13 @@ final class EntityImpl<S> implements ReactiveEntity<S>, EventProcessor, Reactive
     }
 
     @Override
+    public void emit(Address target, Object payload) {
+      requireNonNull(target, "target");
+      requireNonNull(payload, "payload");
+      island.runtime().ref(target).send(new Emission(address(), target, payload));
+    }
+
+    @Override
     public <T, R extends @Nullable Object> AwaitedValue<R> call(
         ReactiveEntity<T> target, ServantFunction<? super T, R> query, Duration timeout) {
       requireNonNull(target, "target");
