@@ -3,6 +3,7 @@ package org.armgals.gals;
 import java.time.Duration;
 import java.util.List;
 import org.armgals.active.Address;
+import org.armgals.active.Request;
 import org.armgals.active.ServantFunction;
 import org.jspecify.annotations.Nullable;
 
@@ -59,6 +60,21 @@ public interface CycleContext<S> {
    */
   <T, R extends @Nullable Object> AwaitedValue<R> call(
       ReactiveEntity<T> target, ServantFunction<? super T, R> query, Duration timeout);
+
+  /**
+   * Asks the reactive entity at {@code target}, in this runtime or another one on the same broker,
+   * with a data {@code request} (its destination is {@code target}): the target's {@link
+   * ReactiveEntity#answerWith answer} runs when it takes the request (the first release of its
+   * island after the request arrives), and the answer completes the awaited value, whose status
+   * changes at the beginning of a later cycle of this entity. The value belongs to the reaction
+   * running now, times out and is cancelled as with {@link #call}. To another runtime the request
+   * is encoded on this thread: its type and the answer's must be on the transports' allow-list.
+   *
+   * @throws IllegalArgumentException {@code timeout} is not positive, the request is addressed to
+   *     another destination, or its type is not on the allow-list
+   */
+  <R extends @Nullable Object> AwaitedValue<R> ask(
+      Address target, Request<R> request, Duration timeout);
 
   /** Adds a line to the island's per-cycle trace (when tracing is on; otherwise does nothing). */
   void trace(String line);

@@ -13,7 +13,9 @@ import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
 import org.armgals.active.EmbeddedBroker;
 import org.armgals.active.JmsTransport;
+import org.armgals.active.Request;
 import org.armgals.active.ShutdownMode;
+import org.jspecify.annotations.Nullable;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -29,6 +31,10 @@ class IslandsInTwoRuntimesTest {
 
   /** A payload allowed on the wire. */
   public record Tick(String from, long n) {}
+
+  /** A request allowed on the wire. */
+  public record Level(@Nullable Address sender, Address destination, String of)
+      implements Request<Integer> {}
 
   /** A payload nobody allowed. */
   public record Secret(String what) {}
@@ -57,7 +63,7 @@ class IslandsInTwoRuntimesTest {
           JmsTransport.builder()
               .broker(broker.inVmUrl())
               .prefix("xisl-" + PREFIXES.incrementAndGet())
-              .allow(Emission.class, Tick.class);
+              .allow(Emission.class, Tick.class, Level.class);
       eastTransport = b.build();
       westTransport = b.build();
       eastRuntime = runtime("east", eastTransport);
@@ -85,8 +91,8 @@ class IslandsInTwoRuntimesTest {
   static final class Log {
     final List<String> taken = new CopyOnWriteArrayList<>();
     final List<Object> received = new CopyOnWriteArrayList<>();
-    @org.jspecify.annotations.Nullable Address peer;
-    @org.jspecify.annotations.Nullable Exception refused;
+    @Nullable Address peer;
+    @Nullable Exception refused;
   }
 
   static Reaction<Log> recorder(String from, boolean emitEachCycle) {
@@ -198,6 +204,63 @@ class IslandsInTwoRuntimesTest {
           .hasMessageContaining("allow-list");
       assertThat(s.eastTransport.stats().sent()).isZero();
       assertThat(s.westTransport.stats().rejected()).isZero();
+    }
+  }
+
+  /** An asker: asks once, at its first cycle, and keeps the awaited value. */
+  static final class Asker {
+    @Nullable AwaitedValue<Integer> level;
+  }
+
+  private static AwaitedValue<Integer> askAcross(TwoSides s, ReactiveEntity<?> target) {
+    Asker asker = new Asker();
+    s.east.spawn(
+        "asker",
+        asker,
+        c -> {
+          if (c.instant() == 1) {
+            c.state().level =
+                c.ask(
+                    target.address(),
+                    new Level(null, target.address(), "tank"),
+                    Duration.ofSeconds(60));
+          }
+        });
+    s.east.step();
+    await(() -> IslandImpl.objectOf(target).queueDepth() == 1);
+    s.west.step(); // the target answers as it takes the request
+    AwaitedValue<Integer> level = asker.level;
+    assertThat(level).isNotNull();
+    long deadline = System.nanoTime() + WAIT.toNanos();
+    while (level.isPending() && System.nanoTime() - deadline < 0) {
+      s.east.step(); // the status changes at the beginning of a cycle of the asker
+    }
+    return level;
+  }
+
+  @Test
+  void aRequestToAnEntityOfAnotherRuntimeComesBackAsAnAwaitedValue() {
+    try (TwoSides s = new TwoSides(Duration.ofMillis(1), Duration.ofMillis(1))) {
+      ReactiveEntity<Log> tank = s.west.spawn("tank", new Log(), recorder("tank", false));
+      tank.answerWith((state, request) -> ((Level) request).of().length() * 10);
+      s.west.step(); // applies answerWith
+
+      AwaitedValue<Integer> level = askAcross(s, tank);
+
+      assertThat(level.status()).isEqualTo(AwaitedValue.Status.AVAILABLE);
+      assertThat(level.value()).isEqualTo(40);
+    }
+  }
+
+  @Test
+  void aRequestToAnEntityThatAnswersNothingFails() {
+    try (TwoSides s = new TwoSides(Duration.ofMillis(1), Duration.ofMillis(1))) {
+      ReactiveEntity<Log> mute = s.west.spawn("mute", new Log(), recorder("mute", false));
+
+      AwaitedValue<Integer> level = askAcross(s, mute);
+
+      assertThat(level.status()).isEqualTo(AwaitedValue.Status.FAILED);
+      assertThat(level.failure()).get().asString().contains("answers no requests").contains("mute");
     }
   }
 
