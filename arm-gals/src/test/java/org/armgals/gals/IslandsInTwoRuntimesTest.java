@@ -253,6 +253,36 @@ class IslandsInTwoRuntimesTest {
   }
 
   @Test
+  void askByAddressWorksInOneRuntimeToo() {
+    try (TwoSides s = new TwoSides(Duration.ofMillis(1), Duration.ofMillis(1))) {
+      Island other = Island.builder("other", s.eastRuntime).jmx(false).build();
+      try (other) {
+        ReactiveEntity<Log> tank = other.spawn("tank", new Log(), recorder("tank", false));
+        tank.answerWith((state, request) -> 7);
+        other.step();
+        Asker asker = new Asker();
+        s.east.spawn(
+            "asker",
+            asker,
+            c -> {
+              if (c.instant() == 1) {
+                c.state().level = c.ask(tank.address(), new Level(null, tank.address(), "x"), WAIT);
+              }
+            });
+        s.east.step(); // asks
+        other.step(); // answers
+        s.east.step(); // takes the answer
+        s.east.step(); // settles it
+
+        assertThat(asker.level).isNotNull();
+        assertThat(asker.level.status()).isEqualTo(AwaitedValue.Status.AVAILABLE);
+        assertThat(asker.level.value()).isEqualTo(7);
+        assertThat(s.eastTransport.stats().sent()).isZero();
+      }
+    }
+  }
+
+  @Test
   void aRequestToAnEntityThatAnswersNothingFails() {
     try (TwoSides s = new TwoSides(Duration.ofMillis(1), Duration.ofMillis(1))) {
       ReactiveEntity<Log> mute = s.west.spawn("mute", new Log(), recorder("mute", false));
