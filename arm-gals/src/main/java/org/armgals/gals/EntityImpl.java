@@ -17,6 +17,7 @@ import org.armgals.active.EventProcessor;
 import org.armgals.active.FutureEvent;
 import org.armgals.active.FutureValue;
 import org.armgals.active.ReactiveCycle;
+import org.armgals.active.Request;
 import org.armgals.active.ServantFunction;
 import org.armgals.active.SynchronousFutureValue;
 import org.jspecify.annotations.Nullable;
@@ -36,6 +37,7 @@ final class EntityImpl<S> implements ReactiveEntity<S>, EventProcessor, Reactive
   private final List<Pending<?>> pending = new ArrayList<>();
   private final List<String> traceLines = new ArrayList<>();
   private volatile List<String> reactionNames = List.of();
+  private @Nullable Answer<S> answerer;
   private @Nullable ActiveObject<EntityImpl<S>> object;
 
   EntityImpl(String name, S state, IslandImpl island, Reaction<S> main) {
@@ -132,6 +134,12 @@ final class EntityImpl<S> implements ReactiveEntity<S>, EventProcessor, Reactive
   }
 
   @Override
+  public void answerWith(Answer<S> answer) {
+    requireNonNull(answer, "answer");
+    island.request(new PendingAdaptation(this, "answerWith", () -> answerer = answer));
+  }
+
+  @Override
   public List<String> reactions() {
     return reactionNames;
   }
@@ -160,6 +168,22 @@ final class EntityImpl<S> implements ReactiveEntity<S>, EventProcessor, Reactive
           throw new IllegalArgumentException(
               "a reactive entity takes payloads sent with send or emit, not " + event);
     }
+  }
+
+  @Override
+  public @Nullable Object answer(Request<?> request) throws Exception {
+    Answer<S> a = answerer;
+    if (a == null) {
+      throw new UnsupportedOperationException(
+          "reactive entity "
+              + name
+              + " answers no requests (see answerWith); it was asked "
+              + request);
+    }
+    if (island.tracing()) {
+      traceLines.add("asked " + request);
+    }
+    return a.answer(state, request);
   }
 
   @Override
@@ -237,6 +261,13 @@ final class EntityImpl<S> implements ReactiveEntity<S>, EventProcessor, Reactive
     }
 
     @Override
+    public void emit(Address target, Object payload) {
+      requireNonNull(target, "target");
+      requireNonNull(payload, "payload");
+      island.runtime().ref(target).send(new Emission(address(), target, payload));
+    }
+
+    @Override
     public <T, R extends @Nullable Object> AwaitedValue<R> call(
         ReactiveEntity<T> target, ServantFunction<? super T, R> query, Duration timeout) {
       requireNonNull(target, "target");
@@ -253,6 +284,21 @@ final class EntityImpl<S> implements ReactiveEntity<S>, EventProcessor, Reactive
       }
       long periods = island.periodsIn(timeout);
       Pending<R> p = new Pending<>(reaction, instant + periods, sf);
+      pending.add(p);
+      return p;
+    }
+
+    @Override
+    public <R extends @Nullable Object> AwaitedValue<R> ask(
+        Address target, Request<R> request, Duration timeout) {
+      requireNonNull(target, "target");
+      requireNonNull(request, "request");
+      requireNonNull(timeout, "timeout");
+      if (timeout.isNegative() || timeout.isZero()) {
+        throw new IllegalArgumentException("timeout must be > 0, was " + timeout);
+      }
+      FutureValue<R> f = island.runtime().ref(target).ask(request);
+      Pending<R> p = new Pending<>(reaction, instant + island.periodsIn(timeout), f);
       pending.add(p);
       return p;
     }

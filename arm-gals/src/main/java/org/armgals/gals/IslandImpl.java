@@ -227,6 +227,10 @@ final class IslandImpl implements Island {
     LOG.warn("island {} instant {}: {} of {} failed", name, instant, what, entity.name(), e);
   }
 
+  ActiveRuntime runtime() {
+    return runtime;
+  }
+
   boolean tracing() {
     return trace.on();
   }

@@ -1,22 +1,23 @@
 package org.armgals.gals;
 
 import java.util.Optional;
-import org.armgals.active.SynchronousFutureValue;
+import org.armgals.active.FutureValue;
 import org.jspecify.annotations.Nullable;
 
 /**
- * An awaited value over the active-wait future arm-active hands a reactive object. Its status is
+ * An awaited value over the active-wait future arm-active hands a reactive object (or the future of
+ * a request to another runtime, completed by the transport and read only here). Its status is
  * settled by its entity at the beginning of a cycle ({@link #settle}), on the entity's thread.
  */
 final class Pending<R extends @Nullable Object> implements AwaitedValue<R> {
   final String reaction;
   final long deadline;
-  private final SynchronousFutureValue<R> future;
+  private final FutureValue<R> future;
   private volatile Status status = Status.PENDING;
   private @Nullable R value;
   private @Nullable Throwable failure;
 
-  Pending(String reaction, long deadline, SynchronousFutureValue<R> future) {
+  Pending(String reaction, long deadline, FutureValue<R> future) {
     this.reaction = reaction;
     this.deadline = deadline;
     this.future = future;

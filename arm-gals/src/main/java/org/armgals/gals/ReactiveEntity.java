@@ -65,6 +65,13 @@ public sealed interface ReactiveEntity<S> permits EntityImpl {
    */
   void adapt(String description, Consumer<? super S> change);
 
+  /**
+   * Requests that the entity answer the {@link org.armgals.active.Request}s sent to it with {@code
+   * answer}, replacing the one before; applied like the other requests. Until then a request is
+   * refused: the asker's value fails with {@link UnsupportedOperationException}.
+   */
+  void answerWith(Answer<S> answer);
+
   /** The names of its reactions, in running order, as of the last adaptation point. */
   List<String> reactions();
 }
