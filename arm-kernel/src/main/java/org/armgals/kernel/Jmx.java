@@ -137,6 +137,13 @@ final class Jmx {
     }
 
     @Override
+    public Map<String, Boolean> getLost() {
+      Map<String, Boolean> r = new LinkedHashMap<>();
+      each((name, v) -> r.put(name, v.lost()));
+      return r;
+    }
+
+    @Override
     public long getSuppressedAdaptations() {
       return m.suppressed();
     }
