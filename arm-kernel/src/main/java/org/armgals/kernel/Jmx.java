@@ -108,7 +108,7 @@ final class Jmx {
     }
   }
 
-  private record MetaBean(BehavioralMetaImpl m) implements BehavioralMetaMXBean {
+  record MetaBean(BehavioralMetaImpl m) implements BehavioralMetaMXBean {
     @Override
     public Map<String, String> getModels() {
       return m.modelStates();
