@@ -229,6 +229,31 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
     return OptionalLong.of(version);
   }
 
+  /**
+   * Tells this meta that {@code runtime} is gone: every model of an entity living there is marked
+   * lost, and the policy hears a {@link FailureEvent} for it, whatever the entity's filter (a loss
+   * is always told, as failures are). The event's {@code error} is {@code cause}, its {@code seq}
+   * the last one the model integrated (it is not integrated itself).
+   */
+  void runtimeGone(String runtime, String cause, String message) {
+    requireNonNull(runtime, "runtime");
+    object()
+        .signal(
+            own -> {
+              for (Model<?> m : List.copyOf(models.values())) {
+                if (!m.address().runtime().equals(runtime)) {
+                  continue;
+                }
+                m.lost();
+                publish(m);
+                policy.onNotification(
+                    context,
+                    new FailureEvent(
+                        m.address(), address(), Math.max(1, m.lastSeq()), cause, message, ""));
+              }
+            });
+  }
+
   long suppressed() {
     long total = 0;
     for (Published p : views.values()) {

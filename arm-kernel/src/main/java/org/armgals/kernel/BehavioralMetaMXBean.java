@@ -19,6 +19,9 @@ public interface BehavioralMetaMXBean {
   /** The last adaptation version each entity acknowledged. */
   Map<String, Long> getAppliedVersions();
 
+  /** Whether each entity's runtime was reported lost and nothing was heard from it since. */
+  Map<String, Boolean> getLost();
+
   /** The adaptations the damping held back, over all entities. */
   long getSuppressedAdaptations();
 }

@@ -108,7 +108,7 @@ final class Jmx {
     }
   }
 
-  private record MetaBean(BehavioralMetaImpl m) implements BehavioralMetaMXBean {
+  record MetaBean(BehavioralMetaImpl m) implements BehavioralMetaMXBean {
     @Override
     public Map<String, String> getModels() {
       return m.modelStates();
@@ -133,6 +133,13 @@ final class Jmx {
     public Map<String, Long> getAppliedVersions() {
       Map<String, Long> r = new LinkedHashMap<>();
       each((name, v) -> r.put(name, v.appliedVersion()));
+      return r;
+    }
+
+    @Override
+    public Map<String, Boolean> getLost() {
+      Map<String, Boolean> r = new LinkedHashMap<>();
+      each((name, v) -> r.put(name, v.lost()));
       return r;
     }
 

@@ -5,6 +5,7 @@ import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
 import org.armgals.active.JmsTransport;
 import org.armgals.kernel.spi.MetaPolicy;
+import org.armgals.presence.spi.PresenceListener;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.State;
 import org.armgals.representation.StateSpace;
@@ -101,6 +102,17 @@ public interface Kernel extends AutoCloseable {
   static JmsTransport.Builder allowKernelEvents(JmsTransport.Builder builder) {
     return Wire.allow(builder);
   }
+
+  /**
+   * The kernel's ear on runtime presence (decision 0028), to add to this runtime's {@link
+   * org.armgals.presence.Presence}: when a runtime is reported {@link
+   * org.armgals.presence.PresenceEvent.Lost lost} or {@link org.armgals.presence.PresenceEvent.Left
+   * gone}, every behavioral meta of this kernel that models an entity living there marks that model
+   * lost ({@link ModelView#lost()}) and its policy hears a {@link FailureEvent} whose {@code error}
+   * is the presence event's class name and whose message names the runtime. Joins are ignored: a
+   * model stops being lost when it next hears from its entity.
+   */
+  PresenceListener presenceListener();
 
   /**
    * Stops every entity of the kernel and unregisters their MBeans; the runtime itself is left

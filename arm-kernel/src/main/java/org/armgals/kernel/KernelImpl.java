@@ -12,6 +12,8 @@ import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
 import org.armgals.active.JmsTransport;
 import org.armgals.kernel.spi.MetaPolicy;
+import org.armgals.presence.PresenceEvent;
+import org.armgals.presence.spi.PresenceListener;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.State;
 import org.armgals.representation.StateSpace;
@@ -140,6 +142,28 @@ final class KernelImpl implements Kernel {
     basic.addBaseLevelEntity(made).touch();
     made.settle();
     return made;
+  }
+
+  @Override
+  public PresenceListener presenceListener() {
+    return this::presence;
+  }
+
+  private void presence(PresenceEvent event) {
+    String message;
+    switch (event) {
+      case PresenceEvent.Lost lost ->
+          message = "runtime '" + lost.runtime() + "' lost: silent for " + lost.silence();
+      case PresenceEvent.Left left -> message = "runtime '" + left.runtime() + "' left";
+      case PresenceEvent.Joined joined -> {
+        return;
+      }
+    }
+    for (EntityImpl<?> e : byAddress.values()) {
+      if (e instanceof BehavioralMetaImpl meta && !meta.isStopped()) {
+        meta.runtimeGone(event.runtime(), event.getClass().getName(), message);
+      }
+    }
   }
 
   @Override

@@ -33,6 +33,7 @@ final class Model<S extends State> {
   private Set<S> candidates = Set.of();
   private long lastSeq;
   private long lastHeard;
+  private boolean lost;
   private boolean resyncing = true;
   private long lastAsk;
   private long resyncRequests;
@@ -72,6 +73,7 @@ final class Model<S extends State> {
     boolean gap = lastSeq != 0 && n.seq() != lastSeq + 1;
     lastSeq = n.seq();
     lastHeard = now;
+    lost = false;
     if (gap) {
       resyncing = true;
     }
@@ -132,6 +134,11 @@ final class Model<S extends State> {
     return lastSeq;
   }
 
+  /** Marks the entity lost with its runtime, until a notification from it is integrated. */
+  void lost() {
+    lost = true;
+  }
+
   ModelView view(long now) {
     return new ModelView(
         entity.address(),
@@ -144,7 +151,8 @@ final class Model<S extends State> {
         requestedVersion,
         appliedVersion,
         governor.suppressed(),
-        filter.expression());
+        filter.expression(),
+        lost);
   }
 
   @Override

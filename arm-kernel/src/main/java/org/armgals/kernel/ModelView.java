@@ -24,6 +24,8 @@ import org.jspecify.annotations.Nullable;
  * @param appliedVersion the version the entity acknowledged having applied last, 0 if none
  * @param suppressedAdaptations how many adaptations the damping held back
  * @param filter the selector its notifications are judged by
+ * @param lost whether the entity's runtime was reported lost or gone ({@link
+ *     Kernel#presenceListener}) and the model has heard nothing from it since
  */
 public record ModelView(
     Address entity,
@@ -36,7 +38,8 @@ public record ModelView(
     long requestedVersion,
     long appliedVersion,
     long suppressedAdaptations,
-    String filter) {
+    String filter,
+    boolean lost) {
 
   /** Checks and copies the components. */
   public ModelView {

@@ -45,6 +45,7 @@ class JmxTest {
       assertThat(model.getModels().get("robot")).contains("battery=0.5");
       assertThat(model.getStalenessMillis()).isEqualTo(Map.of("robot", 2000L));
       assertThat(model.getFilters()).isEqualTo(Map.of("robot", "kind = 'state'"));
+      assertThat(model.getLost()).isEqualTo(Map.of("robot", false));
 
       kernel.close();
       assertThat(server.isRegistered(Jmx.name("jmx-test", "Entity", "robot"))).isFalse();
