@@ -9,6 +9,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import org.armgals.active.TimeSource;
+import org.armgals.bench.Args;
 
 /**
  * Runs the broker benchmark over one embedded broker and prints one line per run:
@@ -57,10 +58,12 @@ public final class BrokerBench {
     List<String> names = new ArrayList<>();
     for (int i = 0; i < args.length; i++) {
       switch (args[i]) {
-        case "--warmup" -> warmup = count(value(args, ++i, "--warmup"), "--warmup", 0);
-        case "--runs" -> runs = count(value(args, ++i, "--runs"), "--runs", 1);
-        case "--messages" -> messages = count(value(args, ++i, "--messages"), "--messages", 1);
-        case "--requests" -> requests = count(value(args, ++i, "--requests"), "--requests", 1);
+        case "--warmup" -> warmup = Args.count(Args.value(args, ++i, "--warmup"), "--warmup", 0);
+        case "--runs" -> runs = Args.count(Args.value(args, ++i, "--runs"), "--runs", 1);
+        case "--messages" ->
+            messages = Args.count(Args.value(args, ++i, "--messages"), "--messages", 1);
+        case "--requests" ->
+            requests = Args.count(Args.value(args, ++i, "--requests"), "--requests", 1);
         default -> names.add(known(args[i]));
       }
     }
@@ -137,26 +140,5 @@ public final class BrokerBench {
           "unknown workload '" + name + "'; expected one of " + WORKLOADS);
     }
     return name;
-  }
-
-  private static String value(String[] args, int i, String option) {
-    if (i >= args.length) {
-      throw new IllegalArgumentException(option + " needs a value");
-    }
-    return args[i];
-  }
-
-  private static int count(String text, String option, int min) {
-    String expected = option + " must be an integer >= " + min + ", was '" + text + "'";
-    int n;
-    try {
-      n = Integer.parseInt(text);
-    } catch (NumberFormatException e) {
-      throw new IllegalArgumentException(expected, e);
-    }
-    if (n < min) {
-      throw new IllegalArgumentException(expected);
-    }
-    return n;
   }
 }

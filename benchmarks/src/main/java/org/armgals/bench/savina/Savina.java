@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import org.armgals.active.TimeSource;
+import org.armgals.bench.Args;
 import org.armgals.bench.savina.armgals.ArmgalsSuite;
 import org.armgals.bench.savina.pekko.PekkoSuite;
 
@@ -56,11 +57,12 @@ public final class Savina {
     List<String> names = new ArrayList<>();
     for (int i = 0; i < args.length; i++) {
       switch (args[i]) {
-        case "--impl" -> impl = value(args, ++i, "--impl");
-        case "--warmup" -> warmup = count(value(args, ++i, "--warmup"), "--warmup", 0);
+        case "--impl" -> impl = Args.value(args, ++i, "--impl");
+        case "--warmup" -> warmup = Args.count(Args.value(args, ++i, "--warmup"), "--warmup", 0);
         case "--warmup-seconds" ->
-            warmupSeconds = count(value(args, ++i, "--warmup-seconds"), "--warmup-seconds", 0);
-        case "--runs" -> runs = count(value(args, ++i, "--runs"), "--runs", 1);
+            warmupSeconds =
+                Args.count(Args.value(args, ++i, "--warmup-seconds"), "--warmup-seconds", 0);
+        case "--runs" -> runs = Args.count(Args.value(args, ++i, "--runs"), "--runs", 1);
         default -> names.add(known(args[i]));
       }
     }
@@ -141,26 +143,5 @@ public final class Savina {
           "unknown workload '" + name + "'; expected one of " + WORKLOADS + " or " + MEM);
     }
     return name;
-  }
-
-  private static String value(String[] args, int i, String option) {
-    if (i >= args.length) {
-      throw new IllegalArgumentException(option + " needs a value");
-    }
-    return args[i];
-  }
-
-  private static int count(String text, String option, int min) {
-    String expected = option + " must be an integer >= " + min + ", was '" + text + "'";
-    int n;
-    try {
-      n = Integer.parseInt(text);
-    } catch (NumberFormatException e) {
-      throw new IllegalArgumentException(expected, e);
-    }
-    if (n < min) {
-      throw new IllegalArgumentException(expected);
-    }
-    return n;
   }
 }

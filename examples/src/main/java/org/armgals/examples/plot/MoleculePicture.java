@@ -8,13 +8,9 @@ import java.awt.Font;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
-import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.function.ToDoubleFunction;
-import javax.imageio.ImageIO;
 
 /**
  * A drawing of a molecule: seen from above (x, y) on the left, from the side (x, z) on the right,
@@ -28,7 +24,7 @@ public final class MoleculePicture {
   private static final Color BOUND = new Color(0xDD8452);
 
   static {
-    System.setProperty("java.awt.headless", "true");
+    Png.headless();
   }
 
   private MoleculePicture() {}
@@ -79,17 +75,7 @@ public final class MoleculePicture {
     } finally {
       g.dispose();
     }
-    try {
-      Path parent = png.toAbsolutePath().getParent();
-      if (parent != null) {
-        Files.createDirectories(parent);
-      }
-      if (!ImageIO.write(image, "png", png.toFile())) {
-        throw new IllegalStateException("this JDK has no PNG writer");
-      }
-    } catch (IOException e) {
-      throw new UncheckedIOException("cannot write the picture " + png, e);
-    }
+    Png.write(image, png, "picture");
   }
 
   /** Pixels per metre so that everything fits in a panel, on both views. */

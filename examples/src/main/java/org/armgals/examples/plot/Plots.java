@@ -2,16 +2,12 @@ package org.armgals.examples.plot;
 
 import static java.util.Objects.requireNonNull;
 
-import java.io.IOException;
-import java.io.OutputStream;
-import java.io.UncheckedIOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.knowm.xchart.ChartEncoder;
+import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
@@ -23,8 +19,7 @@ public final class Plots {
   private static final int HEIGHT = 600;
 
   static {
-    // Plots are drawn off screen: never ask for a display.
-    System.setProperty("java.awt.headless", "true");
+    Png.headless();
   }
 
   private Plots() {}
@@ -151,16 +146,6 @@ public final class Plots {
     if (!png.getFileName().toString().endsWith(".png")) {
       throw new IllegalArgumentException("a plot is written to a .png file, not " + png);
     }
-    try {
-      Path parent = png.toAbsolutePath().getParent();
-      if (parent != null) {
-        Files.createDirectories(parent);
-      }
-      try (OutputStream out = Files.newOutputStream(png)) {
-        ChartEncoder.saveChart(chart, out, "png");
-      }
-    } catch (IOException e) {
-      throw new UncheckedIOException("cannot write the plot " + png, e);
-    }
+    Png.write(BitmapEncoder.getBufferedImage(chart), png, "plot");
   }
 }
