@@ -5,6 +5,7 @@ import static java.util.Objects.requireNonNull;
 import java.io.Writer;
 import java.time.Duration;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.function.IntFunction;
 import org.armgals.maam.sim.spi.Controller;
@@ -24,6 +25,7 @@ public final class SimulationBuilder {
   final Map<Integer, Controller> controllerById = new HashMap<>();
   Pacer pacer = Pacer.asFastAsPossible();
   @Nullable Writer trace;
+  final Map<String, String> traceAttributes = new LinkedHashMap<>();
 
   SimulationBuilder(Scene scene) {
     this.scene = requireNonNull(scene, "scene");
@@ -83,6 +85,25 @@ public final class SimulationBuilder {
    */
   public SimulationBuilder trace(Writer trace) {
     this.trace = requireNonNull(trace, "trace");
+    return this;
+  }
+
+  /**
+   * Adds {@code name: value} to the trace's header, under {@code "attributes"}, in the order added:
+   * what a tool needs to know about the run beyond the scene and the seed (the robot that ran, its
+   * options), e.g. to replay it.
+   *
+   * @throws IllegalArgumentException if {@code name} is blank or already added
+   */
+  public SimulationBuilder traceAttribute(String name, String value) {
+    requireNonNull(name, "name");
+    requireNonNull(value, "value");
+    if (name.isBlank()) {
+      throw new IllegalArgumentException("trace attribute name is blank: expected a word");
+    }
+    if (traceAttributes.putIfAbsent(name, value) != null) {
+      throw new IllegalArgumentException("trace attribute '" + name + "' is already set");
+    }
     return this;
   }
 

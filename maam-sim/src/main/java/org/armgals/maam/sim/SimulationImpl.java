@@ -77,7 +77,7 @@ final class SimulationImpl implements Simulation {
     }
     this.trace = b.trace == null ? null : new TraceWriter(b.trace);
     if (trace != null) {
-      trace.header(scene, b.seed, b.stepNanos, b.periodNanos, atomIds());
+      trace.header(scene, b.seed, b.stepNanos, b.periodNanos, atomIds(), b.traceAttributes);
     }
   }
 

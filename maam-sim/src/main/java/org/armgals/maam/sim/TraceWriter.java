@@ -5,6 +5,7 @@ import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.lang.reflect.RecordComponent;
 import java.util.List;
+import java.util.Map;
 import org.armgals.maam.spi.Leg;
 
 /** Writes the trace: a header line, then one JSON line per control cycle (docs/simulator.md). */
@@ -20,7 +21,13 @@ final class TraceWriter {
     this.out = out;
   }
 
-  void header(Scene scene, long seed, long stepNanos, long periodNanos, List<Integer> ids) {
+  void header(
+      Scene scene,
+      long seed,
+      long stepNanos,
+      long periodNanos,
+      List<Integer> ids,
+      Map<String, String> attributes) {
     StringBuilder b = line;
     b.setLength(0);
     b.append("{\"type\":\"header\",\"format\":\"").append(FORMAT).append("\",\"version\":");
@@ -30,6 +37,18 @@ final class TraceWriter {
     b.append(",\"stepNanos\":").append(stepNanos);
     b.append(",\"periodNanos\":").append(periodNanos);
     b.append(",\"atoms\":").append(ids.toString().replace(" ", ""));
+    b.append(",\"attributes\":{");
+    boolean first = true;
+    for (Map.Entry<String, String> attribute : attributes.entrySet()) {
+      if (!first) {
+        b.append(',');
+      }
+      first = false;
+      Json.string(b, attribute.getKey());
+      b.append(':');
+      Json.string(b, attribute.getValue());
+    }
+    b.append('}');
     b.append(",\"params\":{");
     RecordComponent[] components = AtomParams.class.getRecordComponents();
     for (int i = 0; i < components.length; i++) {

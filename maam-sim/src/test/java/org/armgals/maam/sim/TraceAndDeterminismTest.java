@@ -1,6 +1,7 @@
 package org.armgals.maam.sim;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
@@ -69,5 +70,32 @@ class TraceAndDeterminismTest {
             "{\"t\":400000000,\"type\":\"note\",\"atom\":3,\"text\":\"meta: schema \\\"walk\\\""
                 + " replaced\"}");
     assertThat(String.join("\n", lines)).contains("\"type\":\"messageLost\"");
+  }
+
+  @Test
+  void traceAttributesGoIntoTheHeaderInTheOrderGiven() {
+    StringWriter out = new StringWriter();
+    try (Simulation s =
+        Simulation.builder(Scenes.builtIn("single"))
+            .traceAttribute("example", "walker")
+            .traceAttribute("note", "say \"hi\"")
+            .trace(out)
+            .build()) {
+      s.runCycles(1);
+    }
+    assertThat(out.toString().lines().findFirst().orElseThrow())
+        .contains("\"attributes\":{\"example\":\"walker\",\"note\":\"say \\\"hi\\\"\"}");
+  }
+
+  @Test
+  void aTraceAttributeIsSetOnceAndNamed() {
+    SimulationBuilder builder = Simulation.builder(Scenes.builtIn("single"));
+    builder.traceAttribute("example", "walker");
+    assertThatThrownBy(() -> builder.traceAttribute("example", "caterpillar"))
+        .isInstanceOf(IllegalArgumentException.class)
+        .hasMessageContaining("'example'");
+    assertThatThrownBy(() -> builder.traceAttribute(" ", "x"))
+        .isInstanceOf(IllegalArgumentException.class)
+        .hasMessageContaining("blank");
   }
 }
