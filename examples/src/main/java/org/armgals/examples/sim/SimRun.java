@@ -1,0 +1,186 @@
+package org.armgals.examples.sim;
+
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.io.UncheckedIOException;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import java.util.Locale;
+import org.armgals.active.TimeSource;
+import org.armgals.examples.cli.RunSettings;
+import org.armgals.examples.cli.Summary;
+import org.armgals.maam.sim.Scene;
+import org.armgals.maam.sim.Simulation;
+import org.armgals.maam.sim.SimulationBuilder;
+import org.armgals.maam.sim.spi.Pacer;
+
+/**
+ * Runs a {@link SimExample} as {@code armgals run} does: builds its scene's simulation with the
+ * settings' seed and period, lets its crew drive it for the settings' duration (as fast as
+ * possible, or paced to real time), shows the progress, and leaves in the output directory:
+ *
+ * <ul>
+ *   <li>{@value #TRACE}: the simulator's trace, whose header names the example and its options (so
+ *       that {@code armgals replay} can run it again);
+ *   <li>{@value Outputs#TRAJECTORY}, {@value Outputs#ENERGY}, {@value Outputs#ADAPTATIONS}: the
+ *       atoms' paths seen from above, the energy left over time, the adaptations on a time line;
+ *   <li>{@value Outputs#START} and {@value Outputs#END}: the molecule at the start and at the end.
+ * </ul>
+ *
+ * The summary: distance covered by the molecule's centre (on the ground plane), its speed in atom
+ * diameters per second (an atom's diameter is tip to tip, legs straight), the energy used, the
+ * adaptations made and why, and the missed cycles (paced to real time: cycles that ended later than
+ * a period after their time; plus those the crew reports).
+ */
+final class SimRun {
+  static final String TRACE = "trace.jsonl";
+
+  /** Trace header attributes: what a replay needs beyond the scene and the seed. */
+  static final String EXAMPLE = "example";
+
+  static final String CYCLES = "cycles";
+  static final String PERIOD_NANOS = "periodNanos";
+  static final String ATOMS = "atoms";
+
+  private SimRun() {}
+
+  static Summary run(SimExample example, RunSettings settings, PrintStream out) {
+    return run(example, settings, out, System.console() != null, TimeSource.system());
+  }
+
+  static Summary run(
+      SimExample example,
+      RunSettings settings,
+      PrintStream out,
+      boolean terminal,
+      TimeSource clock) {
+    checkBroker(example, settings);
+    Scene scene = example.scene(settings);
+    long cycles = cycles(example, settings);
+    Path dir = settings.out();
+    try {
+      Files.createDirectories(dir);
+    } catch (IOException e) {
+      throw new UncheckedIOException("cannot create the output directory " + dir, e);
+    }
+    out.printf(
+        Locale.ROOT,
+        "armgals %s: scene '%s', %d atoms, %d cycles of %s ms, seed %d%s%n",
+        example.name(),
+        scene.name(),
+        scene.atoms().size(),
+        cycles,
+        millis(settings.period()),
+        settings.seed(),
+        settings.realTime() ? ", paced to real time" : "");
+    Recording recording = new Recording(scene.params());
+    Progress progress = new Progress(out, terminal, cycles, clock);
+    long missed;
+    long crewMissed;
+    List<Summary.Entry> figures;
+    try (Writer trace = Files.newBufferedWriter(dir.resolve(TRACE), StandardCharsets.UTF_8);
+        Simulation sim = build(example, settings, scene, cycles, trace)) {
+      RecordingJournal journal = new RecordingJournal(sim, recording);
+      recording.sample(sim);
+      try (Crew crew = example.start(sim, settings, journal)) {
+        missed = drive(sim, cycles, settings, recording, progress);
+        crewMissed = crew.missedCycles();
+        figures = crew.figures();
+      }
+    } catch (IOException e) {
+      throw new UncheckedIOException("cannot write the trace in " + dir, e);
+    }
+    Outputs.write(example.name(), recording, dir);
+    return recording.summary(missed + crewMissed, figures, dir);
+  }
+
+  /**
+   * Runs {@code example} with {@code settings} and writes its trace to {@code trace}, nothing else:
+   * what a replay compares with the trace of the original run.
+   */
+  static void traceOnly(SimExample example, RunSettings settings, Writer trace) {
+    checkBroker(example, settings);
+    Scene scene = example.scene(settings);
+    long cycles = cycles(example, settings);
+    BufferedWriter buffered = new BufferedWriter(trace);
+    try (Simulation sim = build(example, settings, scene, cycles, buffered)) {
+      Recording recording = new Recording(scene.params());
+      Crew crew = example.start(sim, settings, new RecordingJournal(sim, recording));
+      try {
+        for (long i = 0; i < cycles; i++) {
+          sim.runCycle();
+        }
+      } finally {
+        crew.close();
+      }
+    }
+    try {
+      buffered.flush();
+    } catch (IOException e) {
+      throw new UncheckedIOException("cannot write the trace", e);
+    }
+  }
+
+  /** The number of cycles a run lasts: given, or its simulated time rounded up to a cycle. */
+  static long cycles(SimExample example, RunSettings settings) {
+    if (settings.cycles().isPresent()) {
+      return settings.cycles().getAsLong();
+    }
+    Duration time = settings.simulated().orElse(example.defaultDuration());
+    long period = settings.period().toNanos();
+    return Math.max(1, (time.toNanos() + period - 1) / period);
+  }
+
+  private static void checkBroker(SimExample example, RunSettings settings) {
+    if (settings.broker().isPresent() && !example.usesBroker()) {
+      throw new IllegalArgumentException(
+          "'"
+              + example.name()
+              + "' runs in one runtime, without a broker: --broker applies to robots spread"
+              + " over several runtimes, such as 'distributed'");
+    }
+  }
+
+  private static Simulation build(
+      SimExample example, RunSettings settings, Scene scene, long cycles, Writer trace) {
+    SimulationBuilder builder =
+        Simulation.builder(scene)
+            .seed(settings.seed())
+            .controlPeriod(settings.period())
+            .trace(trace)
+            .traceAttribute(EXAMPLE, example.name())
+            .traceAttribute(CYCLES, Long.toString(cycles))
+            .traceAttribute(PERIOD_NANOS, Long.toString(settings.period().toNanos()));
+    settings.atoms().ifPresent(n -> builder.traceAttribute(ATOMS, Integer.toString(n)));
+    if (settings.realTime()) {
+      builder.pacer(Pacer.realTime());
+    }
+    return builder.build();
+  }
+
+  private static long drive(
+      Simulation sim, long cycles, RunSettings settings, Recording recording, Progress progress) {
+    long period = settings.period().toNanos();
+    long missed = 0;
+    for (long i = 1; i <= cycles; i++) {
+      sim.runCycle();
+      recording.sample(sim);
+      if (settings.realTime() && progress.elapsedNanos() > sim.timeNanos() + period) {
+        missed++;
+      }
+      progress.update(i, sim.timeNanos());
+    }
+    return missed;
+  }
+
+  private static String millis(Duration period) {
+    return period.toNanos() % 1_000_000 == 0
+        ? Long.toString(period.toMillis())
+        : String.format(Locale.ROOT, "%.3f", period.toNanos() / 1e6);
+  }
+}
