@@ -20,19 +20,40 @@ final class EnergyCrew implements Crew {
   private final Simulation sim;
   private final EnergyRobot robot;
   private final @Nullable EnergyMeta meta;
+  private final double capacity;
   private double emptyAt = Double.NaN;
+  private EnergyGait gait = EnergyGait.FAST;
+  private double switchedAt = Double.NaN;
+  private double joulesAtSwitch;
+  private double seconds;
+  private double joules;
 
-  EnergyCrew(Simulation sim, EnergyRobot robot, @Nullable EnergyMeta meta) {
+  EnergyCrew(Simulation sim, EnergyRobot robot, @Nullable EnergyMeta meta, double capacity) {
     this.sim = sim;
     this.robot = robot;
     this.meta = meta;
+    this.capacity = capacity;
+    this.joules = capacity;
   }
 
-  /** One control cycle: the robot's, then a look at the battery it left. */
+  /**
+   * One control cycle: the robot's, then a look at the battery (read at the cycle's start) and at
+   * the gait it left, for the summary's figures.
+   */
   void cycle() {
     robot.cycle();
-    if (Double.isNaN(emptyAt) && robot.body().read(Atom.BATTERY) <= 0) {
-      emptyAt = sim.timeNanos() / 1e9;
+    seconds = sim.timeNanos() / 1e9;
+    if (Double.isNaN(emptyAt)) {
+      joules = robot.body().read(Atom.BATTERY);
+      if (joules <= 0) {
+        emptyAt = seconds;
+      }
+    }
+    EnergyGait now = gait();
+    if (!now.equals(gait)) {
+      gait = now;
+      switchedAt = seconds;
+      joulesAtSwitch = joules;
     }
   }
 
@@ -59,10 +80,31 @@ final class EnergyCrew implements Crew {
     return robot;
   }
 
+  /** What a gait drew, and how long a full battery would last at that draw. */
+  private Summary.Entry draw(EnergyGait drawing, double used, double during) {
+    double watts = during > 0 ? used / during : 0;
+    return new Summary.Entry(
+        drawing.name() + " gait's draw",
+        String.format(
+            Locale.ROOT,
+            "%.2f W over %.2f s (a full battery of %.0f J lasts %.1f s at it)",
+            watts,
+            during,
+            capacity,
+            watts > 0 ? capacity / watts : Double.POSITIVE_INFINITY));
+  }
+
   @Override
   public List<Summary.Entry> figures() {
     List<Summary.Entry> figures = new ArrayList<>();
     figures.add(new Summary.Entry("gait", gait().name()));
+    double end = Double.isNaN(emptyAt) ? seconds : emptyAt;
+    if (Double.isNaN(switchedAt)) {
+      figures.add(draw(EnergyGait.FAST, capacity - joules, end));
+    } else {
+      figures.add(draw(EnergyGait.FAST, capacity - joulesAtSwitch, switchedAt));
+      figures.add(draw(EnergyGait.SAVING, joulesAtSwitch - joules, end - switchedAt));
+    }
     figures.add(
         new Summary.Entry(
             "battery empty at",

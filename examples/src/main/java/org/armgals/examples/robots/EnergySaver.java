@@ -50,7 +50,14 @@ public final class EnergySaver implements SimExample {
     this.metaLevel = metaLevel;
   }
 
-  /** The same robot on the same battery, without its meta level: it keeps the fast gait. */
+  /**
+   * The same robot on the same battery, without its meta level: it keeps the fast gait. Named
+   * {@code energy-without-meta}, to compare with {@code energy}.
+   */
+  public static EnergySaver withoutMetaLevel() {
+    return withoutMetaLevel(BATTERY_CAPACITY);
+  }
+
   static EnergySaver withoutMetaLevel(double capacity) {
     return new EnergySaver(capacity, false);
   }
@@ -62,6 +69,9 @@ public final class EnergySaver implements SimExample {
 
   @Override
   public String summary() {
+    if (!metaLevel) {
+      return "the energy robot without its meta level, to compare: it keeps its fast gait";
+    }
     return "the battery example: the meta level ignores energy events until a threshold"
         + " meta-event, then switches to a saving gait; it lasts longer";
   }
@@ -104,7 +114,7 @@ public final class EnergySaver implements SimExample {
     } else {
       robot = new EnergyRobot(sim.body(ATOM), sim::timeNanos, period, capacity, LOW);
     }
-    EnergyCrew crew = new EnergyCrew(sim, robot, meta);
+    EnergyCrew crew = new EnergyCrew(sim, robot, meta, capacity);
     sim.setController(ATOM, (atom, cycle) -> crew.cycle());
     return crew;
   }
