@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.stream.Collectors;
 import org.armgals.examples.robots.Caterpillar;
+import org.armgals.examples.robots.EnergySaver;
 import org.armgals.examples.robots.Walker;
 
 /** The examples {@code armgals} knows, in the order {@code armgals list} shows them. */
@@ -18,7 +19,13 @@ public final class Catalog {
 
   /** The examples shipped with armgals. */
   public static Catalog standard() {
-    return of(List.of(new DemoExample(), new Caterpillar(), new Walker()));
+    return of(
+        List.of(
+            new DemoExample(),
+            new Caterpillar(),
+            new Walker(),
+            new EnergySaver(),
+            EnergySaver.withoutMetaLevel()));
   }
 
   /**

@@ -104,15 +104,7 @@ public final class Caterpillar implements SimExample {
               ids.size() - 1 - i,
               cycleSeconds);
       if (id == head) {
-        meta =
-            new CaterpillarMeta(
-                (CaterpillarModules.Pacemaker)
-                    segment.schedule().modules().stream()
-                        .filter(m -> m.name().equals(CaterpillarSegment.PACEMAKER))
-                        .findFirst()
-                        .orElseThrow(),
-                journal,
-                id);
+        meta = new CaterpillarMeta(segment.builtPacemaker(), journal, id);
         segment.watchedBy(meta);
       }
       sim.setController(id, (atom, cycle) -> segment.cycle());

@@ -32,6 +32,8 @@ import org.armgals.maam.spi.Body;
 final class CaterpillarSegment extends AbstractRobot {
   static final String PACEMAKER = "pacemaker";
 
+  private final Pacemaker pacemaker;
+
   /**
    * @param fromHead the segment's place from the head, 0 first
    * @param cycleSeconds the control period
@@ -40,7 +42,7 @@ final class CaterpillarSegment extends AbstractRobot {
     super(name, body, time);
     Listen listen = new Listen("listen");
     Odometer odometer = new Odometer("odometer");
-    Pacemaker pacemaker =
+    pacemaker =
         new Pacemaker(
             PACEMAKER,
             CaterpillarTuning.PERIOD,
@@ -64,6 +66,11 @@ final class CaterpillarSegment extends AbstractRobot {
             .wire(pacemaker, BEAT, relay, BEAT)
             .wire(step, STROKE, feet, STROKE)
             .build());
+  }
+
+  /** The pacemaker the segment was built with (a meta level may have changed it since). */
+  Pacemaker builtPacemaker() {
+    return pacemaker;
   }
 
   /** Lets {@code meta} watch and adapt this segment. */
