@@ -30,13 +30,13 @@ import org.armgals.maam.spi.Body;
  * front atom also runs the {@value #CLIMB} reflex, whose careful stride suppresses cruise's while
  * its feeler sees the step. The meta level may add {@value #LIFT_FRONT} ({@link #liftFront}).
  *
- * <pre>
- *  cruise:     metronome --tick--> cruise --stride--(S)--> feet      odometry --position-->
- *  climb:      feel --step-ahead--> climb --stride--S(cruise.stride, 0.3 s)     feeler
- *              metronome.tick ==D==> climb.tick
- *  lift-front: odometry.position ==D==> carry <==D== metronome.tick
- *              carry --stride--S(cruise.stride, 0 s)     (added by the meta level)
- * </pre>
+ * <pre>{@code
+ * cruise:     metronome --tick--> cruise --stride--(S)--> feet      odometry --position-->
+ * climb:      feel --step-ahead--> climb --stride--S(cruise.stride, 0.3 s)     feeler
+ *             metronome.tick ==D==> climb.tick
+ * lift-front: odometry.position ==D==> carry <==D== metronome.tick
+ *             carry --stride--S(cruise.stride, 0 s)     (added by the meta level)
+ * }</pre>
  */
 final class ObstacleAtom extends AbstractRobot {
   static final String CRUISE = "cruise";

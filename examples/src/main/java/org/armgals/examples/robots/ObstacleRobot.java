@@ -54,7 +54,7 @@ public final class ObstacleRobot implements SimExample {
 
   @Override
   public Duration defaultDuration() {
-    return Duration.ofSeconds(14);
+    return Duration.ofSeconds(20);
   }
 
   @Override

@@ -15,6 +15,7 @@ import java.util.OptionalLong;
 import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
 import org.armgals.examples.sim.Journal;
+import org.armgals.maam.Schema;
 import org.armgals.maam.sim.Simulation;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -66,7 +67,8 @@ class ObstacleRobotTest {
       assertThat(journal.times.get(0)).isGreaterThan(Duration.ofSeconds(3).toNanos());
       for (ObstacleAtom robot : crew.robots()) {
         assertThat(robot.schedule().names()).contains("carry");
-        assertThat(robot.metaRobot().schemas()).extracting(s -> s.name()).contains("lift-front");
+        assertThat(robot.metaRobot().schemas().stream().map(Schema::name).toList())
+            .contains("lift-front");
         assertThat(robot.errors()).isZero();
         assertThat(robot.rejectedAdaptations()).isZero();
       }
