@@ -4,6 +4,7 @@ import java.util.List;
 import java.util.Locale;
 import org.armgals.examples.cli.Summary;
 import org.armgals.examples.sim.Crew;
+import org.armgals.maam.Schema;
 import org.armgals.maam.sim.Simulation;
 
 /** One run of {@link ObstacleRobot}: the chain's robots and its meta level, if any. */
@@ -48,6 +49,6 @@ final class ObstacleCrew implements Crew {
   }
 
   private List<String> schemaNames() {
-    return robots.get(robots.size() - 1).metaRobot().schemas().stream().map(s -> s.name()).toList();
+    return robots.get(robots.size() - 1).metaRobot().schemas().stream().map(Schema::name).toList();
   }
 }

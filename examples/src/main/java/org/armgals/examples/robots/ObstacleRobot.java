@@ -66,6 +66,7 @@ public final class ObstacleRobot implements SimExample {
   ObstacleCrew start(Simulation sim, RunSettings settings, Journal journal, boolean withMeta) {
     requireNonNull(sim, "sim");
     requireNonNull(settings, "settings");
+    requireNonNull(journal, "journal");
     ObstacleMeta meta = new ObstacleMeta(journal);
     List<Integer> ids = sim.atomIds();
     List<ObstacleAtom> robots = new ArrayList<>();
