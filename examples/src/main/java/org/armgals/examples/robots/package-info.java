@@ -1,7 +1,7 @@
 /**
  * The example robots of {@code armgals run}: each a {@link org.armgals.examples.sim.SimExample}
- * whose atoms run MAAM robots (schemas of perceptors, reactors and actuators joined by subsumption
- * connectors) under meta levels that adapt them while they run.
+ * built with the MAAM framework (schemas of perceptors, reactors and actuators, connectors, meta
+ * levels that adapt them), driving simulated MAAM atoms.
  */
 @NullMarked
 package org.armgals.examples.robots;
