@@ -7,6 +7,7 @@ import java.util.Optional;
 import java.util.stream.Collectors;
 import org.armgals.examples.robots.Caterpillar;
 import org.armgals.examples.robots.EnergySaver;
+import org.armgals.examples.robots.ObstacleRobot;
 import org.armgals.examples.robots.Walker;
 
 /** The examples {@code armgals} knows, in the order {@code armgals list} shows them. */
@@ -21,11 +22,12 @@ public final class Catalog {
   public static Catalog standard() {
     return of(
         List.of(
-            new DemoExample(),
-            new Caterpillar(),
             new Walker(),
+            new Caterpillar(),
+            new ObstacleRobot(),
             new EnergySaver(),
-            EnergySaver.withoutMetaLevel()));
+            EnergySaver.withoutMetaLevel(),
+            new DemoExample()));
   }
 
   /**
