@@ -12,9 +12,10 @@ import org.jspecify.annotations.Nullable;
 
 /**
  * The future of the asynchronous world: wait by necessity. A waiter first spins briefly (most
- * replies between objects come within microseconds), then checks that waiting would not close a
- * wait-for cycle, then parks. A worker thread that parks tells its dispatcher, which starts another
- * worker so that only the waiting object waits.
+ * replies between objects come within microseconds; not for an answer that crosses a broker, see
+ * {@link #remote}), then checks that waiting would not close a wait-for cycle, then parks. A worker
+ * thread that parks tells its dispatcher, which starts another worker so that only the waiting
+ * object waits.
  *
  * <p>{@link #result} goes once from {@code null} to the value ({@link #NIL} for null) or a {@link
  * Failure}; the completing write happens-before every read that sees it.
