@@ -56,6 +56,7 @@ final class JmsTransportImpl implements JmsTransport {
   private final Set<JmsSubscription> subscriptions = ConcurrentHashMap.newKeySet();
   private final AtomicLong subscriptionIds = new AtomicLong();
   private final PendingAnswers pending;
+  private final TimeSource time;
   private final BlockingQueue<Outbound> outbound = new ArrayBlockingQueue<>(QUEUE);
   private final Thread sender;
   private final JmsSender sending;
@@ -75,6 +76,7 @@ final class JmsTransportImpl implements JmsTransport {
     this.codec = new WireCodec(b.allowed, b.maxMessageBytes);
     this.topics = new HashMap<>(b.topics);
     this.jmsEverywhere = b.jmsEverywhere;
+    this.time = b.timeSource;
     this.pending = new PendingAnswers(b.timeSource, b.replyTimeout);
     this.factory = new ActiveMQConnectionFactory(url);
     this.connection =
@@ -211,7 +213,7 @@ final class JmsTransportImpl implements JmsTransport {
     requireNonNull(request, "request");
     Map<String, Object> props = selectorProperties(request);
     byte[] value = encode(request);
-    ValueFuture<Object> future = new ValueFuture<>(null);
+    ValueFuture<Object> future = ValueFuture.remote(time);
     long corr = pending.open(future, destination.toString());
     props.put(WireProperties.MSG, WireProperties.MSG_REQUEST);
     props.put(WireProperties.TO, destination.runtime());
@@ -354,7 +356,7 @@ final class JmsTransportImpl implements JmsTransport {
     if (here != null) {
       return FutureValue.completed(here);
     }
-    ValueFuture<Object> future = new ValueFuture<>(null);
+    ValueFuture<Object> future = ValueFuture.remote(time);
     long corr = pending.open(future, "the name service (name '" + name + "')");
     Map<String, Object> props = new HashMap<>();
     props.put(WireProperties.MSG, WireProperties.MSG_LOOKUP);

@@ -12,9 +12,10 @@ import org.jspecify.annotations.Nullable;
 
 /**
  * The future of the asynchronous world: wait by necessity. A waiter first spins briefly (most
- * replies between objects come within microseconds), then checks that waiting would not close a
- * wait-for cycle, then parks. A worker thread that parks tells its dispatcher, which starts another
- * worker so that only the waiting object waits.
+ * replies between objects come within microseconds; not for an answer that crosses a broker, see
+ * {@link #remote}), then checks that waiting would not close a wait-for cycle, then parks. A worker
+ * thread that parks tells its dispatcher, which starts another worker so that only the waiting
+ * object waits.
  *
  * <p>{@link #result} goes once from {@code null} to the value ({@link #NIL} for null) or a {@link
  * Failure}; the completing write happens-before every read that sees it.
@@ -59,15 +60,37 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
     }
   }
 
-  /** The object that will complete this future; null for an already completed one. */
+  /**
+   * The object that will complete this future; null for an already completed one and for one that a
+   * transport completes.
+   */
   private final @Nullable Core<?> completer;
+
+  /** The time of a future a transport completes, whose waiters park at once; null otherwise. */
+  private final @Nullable TimeSource remoteTime;
 
   private volatile @Nullable Object result;
   private volatile @Nullable Waiter waiters;
   private volatile @Nullable CompletableFuture<T> stage;
 
   ValueFuture(@Nullable Core<?> completer) {
+    this(completer, null);
+  }
+
+  private ValueFuture(@Nullable Core<?> completer, @Nullable TimeSource remoteTime) {
     this.completer = completer;
+    this.remoteTime = remoteTime;
+  }
+
+  /**
+   * A future that a transport completes when the answer comes back from another runtime. Its
+   * waiters park at once: such an answer takes a broker round trip, far longer than the spin, and a
+   * waiter spinning for it only takes a core from the threads that carry the request and its answer
+   * (measured on 2 cores: p50 of a round trip over netty 470-560 µs spinning, 235-370 µs parking).
+   * Timeouts of {@link #getValue(Duration)} are read from {@code time}.
+   */
+  static <T extends @Nullable Object> ValueFuture<T> remote(TimeSource time) {
+    return new ValueFuture<>(null, java.util.Objects.requireNonNull(time, "time"));
   }
 
   static <T extends @Nullable Object> ValueFuture<T> completed(T value) {
@@ -195,16 +218,13 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
     if (r != null) {
       return r;
     }
-    TimeSource time = completer != null ? completer.runtime.timeSource() : TimeSource.system();
-    long spinEnd = time.nanoTime() + SPIN_NANOS;
-    for (int i = 1; ; i++) {
-      Thread.onSpinWait();
-      if ((r = result) != null) {
-        return r;
-      }
-      if ((i & 31) == 0 && time.nanoTime() >= spinEnd) {
-        break;
-      }
+    TimeSource remote = remoteTime;
+    TimeSource time =
+        completer != null
+            ? completer.runtime.timeSource()
+            : remote != null ? remote : TimeSource.system();
+    if (remote == null && (r = spin(time)) != null) {
+      return r;
     }
     Core<?> me = Core.current();
     if (me != null) {
@@ -254,6 +274,20 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
       Dispatcher.afterBlock();
       if (me != null) {
         me.waitingFor = null;
+      }
+    }
+  }
+
+  private @Nullable Object spin(TimeSource time) {
+    long spinEnd = time.nanoTime() + SPIN_NANOS;
+    for (int i = 1; ; i++) {
+      Thread.onSpinWait();
+      Object r = result;
+      if (r != null) {
+        return r;
+      }
+      if ((i & 31) == 0 && time.nanoTime() >= spinEnd) {
+        return null;
       }
     }
   }
