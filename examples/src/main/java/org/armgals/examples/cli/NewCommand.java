@@ -34,6 +34,9 @@ final class NewCommand implements Callable<Integer> {
 
   private static final Pattern PLACEHOLDER = Pattern.compile("\\$\\{(\\w+)}");
 
+  /** The lines that mark the regions docs/user-guide.md shows; a skeleton goes without them. */
+  private static final Pattern TAG_LINE = Pattern.compile("(?m)^[ \\t]*// (tag|end)::\\w+\\[]\\R");
+
   /** Template, and where it goes: {@code JAVA} for the package's source directory. */
   private static final List<String[]> FILES =
       List.of(
@@ -102,7 +105,8 @@ final class NewCommand implements Callable<Integer> {
             place.startsWith("JAVA/")
                 ? sources.resolve(place.substring("JAVA/".length()))
                 : target.resolve(place);
-        Files.writeString(path, fill(template(file[0]), values), StandardCharsets.UTF_8);
+        String text = TAG_LINE.matcher(template(file[0])).replaceAll("");
+        Files.writeString(path, fill(text, values), StandardCharsets.UTF_8);
         written.add(path);
       }
       return List.copyOf(written);

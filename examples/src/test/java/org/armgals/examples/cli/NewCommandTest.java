@@ -60,7 +60,8 @@ class NewCommandTest {
     for (Path file : written) {
       assertThat(Files.readString(file, StandardCharsets.UTF_8))
           .as("%s has no placeholder left but Maven's", file)
-          .doesNotContainPattern("\\$\\{(name|Name|package|version)}");
+          .doesNotContainPattern("\\$\\{(name|Name|package|version)}")
+          .doesNotContain("// tag::");
     }
 
     assertThat(compile(written.stream().filter(p -> p.toString().endsWith(".java")).toList()))
