@@ -2,11 +2,13 @@ package org.armgals.examples.cli;
 
 import java.io.IOException;
 import java.io.PrintStream;
+import java.math.BigDecimal;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.armgals.examples.sim.Replay;
 import org.armgals.examples.sim.SimExample;
@@ -58,8 +60,13 @@ final class ReplayCommand implements Callable<Integer> {
           "'" + example.name() + "' does not run on the simulator: it has no trace to replay");
     }
     out.printf(
-        "replaying %s: '%s', %d cycles of %s, seed %d%n",
-        trace, example.name(), header.cycles(), header.period(), header.seed());
+        Locale.ROOT,
+        "replaying %s: '%s', %d cycles of %s ms, seed %d%n",
+        trace,
+        example.name(),
+        header.cycles(),
+        BigDecimal.valueOf(header.period().toNanos(), 6).stripTrailingZeros().toPlainString(),
+        header.seed());
     Replay.Verdict verdict = Replay.replay(simulated, header, text);
     out.println(verdict.line());
     return verdict instanceof Replay.Reproduced ? 0 : Armgals.FAILED;

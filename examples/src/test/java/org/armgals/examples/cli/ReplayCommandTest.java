@@ -79,6 +79,8 @@ class ReplayCommandTest {
     Result r = armgals("replay", trace.toString());
 
     assertThat(r.status()).as(r.err()).isZero();
+    assertThat(r.out().lines().toList().get(0))
+        .isEqualTo("replaying " + trace + ": 'scripted', 12 cycles of 10 ms, seed 5");
     assertThat(r.out().lines().toList().get(1))
         .matches("reproduced exactly: 12 cycles, trace sha-256 [0-9a-f]{64}");
   }
