@@ -9,8 +9,8 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
 /**
- * The {@code armgals} command: {@code list}, {@code run <example>}. See the package javadoc for the
- * exit statuses.
+ * The {@code armgals} command: {@code list}, {@code run <example>}, {@code replay <trace>}, {@code
+ * new <name>}. See the package javadoc for the exit statuses.
  */
 @Command(
     name = "armgals",
@@ -48,7 +48,9 @@ public final class Armgals implements Runnable {
     CommandLine line =
         new CommandLine(new Armgals(out))
             .addSubcommand(new ListCommand(catalog, out))
-            .addSubcommand(new RunCommand(catalog, out));
+            .addSubcommand(new RunCommand(catalog, out))
+            .addSubcommand(new ReplayCommand(catalog, out))
+            .addSubcommand(new NewCommand(out));
     line.setOut(new PrintWriter(out, true, StandardCharsets.UTF_8));
     line.setErr(new PrintWriter(err, true, StandardCharsets.UTF_8));
     line.setParameterExceptionHandler(

@@ -3,6 +3,7 @@ package org.armgals.examples.sim;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import org.armgals.examples.plot.Marker;
 import org.armgals.examples.plot.MoleculePicture;
@@ -30,7 +31,7 @@ final class Outputs {
         example + ": adaptations", markers, recording.seconds(), dir.resolve(ADAPTATIONS));
     MoleculePicture.write(example + " at the start", recording.first(), dir.resolve(START));
     MoleculePicture.write(
-        String.format(java.util.Locale.ROOT, "%s at %.1f s", example, recording.seconds()),
+        String.format(Locale.ROOT, "%s at %.2f s", example, recording.lastSeconds()),
         recording.last(),
         dir.resolve(END));
   }

@@ -15,8 +15,13 @@ import org.armgals.maam.sim.Simulation;
 
 /**
  * What a run keeps for its pictures and its summary: every atom's position on the ground plane and
- * the energy left, once per cycle; the molecule at the start and at the end; the adaptations. Used
- * by the thread that runs the simulation only.
+ * the energy left, once per reading; the molecule at the start and at the end; the adaptations.
+ * Used by the thread that runs the simulation only.
+ *
+ * <p>The simulator's sensors are read at the start of a cycle, so after cycle {@code n} they tell
+ * the state at the start of cycle {@code n}: a sample is timed by its readings, not by the
+ * simulation's clock, and a sample of readings already kept (the scene's initial pose, read again
+ * by the first cycle) is skipped. The last sample is thus one period before the end of the run.
  */
 final class Recording {
 
@@ -32,6 +37,8 @@ final class Recording {
   private double startEnergy;
   private double endEnergy;
   private double seconds;
+  private double lastSeconds;
+  private long lastReadingNanos = -1;
   private double[] startCentre = {0, 0};
   private double[] endCentre = {0, 0};
 
@@ -39,7 +46,15 @@ final class Recording {
     this.params = params;
   }
 
+  /** Keeps the readings {@code sim}'s atoms have now, unless they are those of the last sample. */
   void sample(Simulation sim) {
+    List<Integer> ids = sim.atomIds();
+    long readingNanos =
+        ids.isEmpty() ? sim.timeNanos() : sim.atom(ids.get(0)).sensors().timeNanos();
+    if (readingNanos == lastReadingNanos) {
+      return;
+    }
+    lastReadingNanos = readingNanos;
     List<AtomView> views = new ArrayList<>();
     double total = 0;
     double x = 0;
@@ -55,16 +70,22 @@ final class Recording {
       views.add(Views.of(sensors, params));
     }
     int n = Math.max(1, sim.atomIds().size());
-    seconds = sim.timeNanos() / 1e9;
-    energy.add(new Point(seconds, total));
+    double at = readingNanos / 1e9;
+    energy.add(new Point(at, total));
     if (first.isEmpty()) {
       first = List.copyOf(views);
       startEnergy = total;
       startCentre = new double[] {x / n, y / n};
     }
     last = List.copyOf(views);
+    lastSeconds = at;
     endEnergy = total;
     endCentre = new double[] {x / n, y / n};
+  }
+
+  /** Tells that the run ended at {@code nanos} of simulated time. */
+  void end(long nanos) {
+    seconds = nanos / 1e9;
   }
 
   void adaptation(Adaptation adaptation) {
@@ -91,11 +112,19 @@ final class Recording {
     return last;
   }
 
+  /** How long the run lasted (s of simulated time). */
   double seconds() {
     return seconds;
   }
 
-  /** How far the molecule's centre went on the ground plane (m). */
+  /** When the last sample was read (s of simulated time): the time of {@link #last()}. */
+  double lastSeconds() {
+    return lastSeconds;
+  }
+
+  /**
+   * How far the molecule's centre went on the ground plane (m), from the first to the last sample.
+   */
   double distance() {
     return Math.hypot(endCentre[0] - startCentre[0], endCentre[1] - startCentre[1]);
   }
@@ -113,7 +142,7 @@ final class Recording {
         entry(
             "speed",
             "%.3f atom diameters/s (%.2f m each)",
-            seconds > 0 ? distance() / atomDiameter() / seconds : 0.0,
+            lastSeconds > 0 ? distance() / atomDiameter() / lastSeconds : 0.0,
             atomDiameter()));
     entries.add(entry("energy used", "%.1f J", startEnergy - endEnergy));
     entries.add(entry("adaptations", "%d", adaptations.size()));

@@ -89,6 +89,7 @@ final class SimRun {
       recording.sample(sim);
       try (Crew crew = example.start(sim, settings, journal)) {
         missed = drive(sim, cycles, settings, recording, progress);
+        recording.end(sim.timeNanos());
         crewMissed = crew.missedCycles();
         figures = crew.figures();
       }

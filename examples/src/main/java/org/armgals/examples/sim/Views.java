@@ -11,27 +11,32 @@ import org.armgals.maam.spi.Leg;
 
 /**
  * Atoms as the pictures draw them, from their sensor readings: the kernel where it is, each leg
- * turned by its two angles (about its first axis, then its second, as docs/simulator.md defines
- * them) and then by the atom's orientation.
+ * pivoting on the kernel's surface (where the simulator's universal joint is) and turned as that
+ * joint turns it: about its second axis, then about its first ({@code Frames.axis1}, {@code axis2}
+ * of maam-sim), each by minus the angle the joint reads (the engine measures the kernel's turn
+ * against the leg, not the leg's against the kernel), then by the atom's orientation. {@code
+ * ViewsTest} holds this to the simulator: a turned leg's tip, seen here, is where its proximity ray
+ * starts.
  */
 final class Views {
   private Views() {}
 
   static AtomView of(AtomSensors atom, AtomParams params) {
-    double reach = params.kernelRadius() + params.legLength();
+    double r = params.kernelRadius();
+    double length = params.legLength();
     List<AtomView.Leg> legs = new ArrayList<>(6);
     for (Leg leg : Leg.values()) {
       LegSensors sensed = atom.leg(leg);
-      double[] d = rest(leg);
-      d = turn(d, axis2(leg), sensed.angle2());
-      d = turn(d, axis1(leg), sensed.angle1());
+      double[] pivot = rotate(atom.orientation(), rest(leg));
+      double[] d = turn(rest(leg), axis2(leg), -sensed.angle2());
+      d = turn(d, axis1(leg), -sensed.angle1());
       d = rotate(atom.orientation(), d);
       legs.add(
           new AtomView.Leg(
               new AtomView.Vec(
-                  atom.position().x() + reach * d[0],
-                  atom.position().y() + reach * d[1],
-                  atom.position().z() + reach * d[2]),
+                  atom.position().x() + r * pivot[0] + length * d[0],
+                  atom.position().y() + r * pivot[1] + length * d[1],
+                  atom.position().z() + r * pivot[2] + length * d[2]),
               sensed.neighbour().isPresent()));
     }
     return new AtomView(

@@ -6,9 +6,11 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /** The command line's contract: what it prints and the status it exits with. */
 class ArmgalsTest {
@@ -143,6 +145,73 @@ class ArmgalsTest {
     }
     assertThat(status).isEqualTo(Armgals.FAILED);
     assertThat(err.toString(StandardCharsets.UTF_8)).contains("motor on fire");
+  }
+
+  @Test
+  void anExamplesRefusalOfASettingIsOneLineAndStatusTwo() {
+    Example picky =
+        new Example() {
+          @Override
+          public String name() {
+            return "picky";
+          }
+
+          @Override
+          public String summary() {
+            return "refuses --atoms";
+          }
+
+          @Override
+          public Summary run(RunSettings settings, PrintStream out) {
+            throw new IllegalArgumentException("'picky' is one atom: --atoms does not apply");
+          }
+        };
+    ByteArrayOutputStream err = new ByteArrayOutputStream();
+    int status;
+    try (PrintStream e = new PrintStream(err, true, StandardCharsets.UTF_8)) {
+      status =
+          Armgals.execute(
+              Catalog.of(List.of(picky)), System.out, e, "run", "picky", "--atoms", "3");
+    }
+    assertThat(status).isEqualTo(Armgals.USAGE);
+    assertThat(err.toString(StandardCharsets.UTF_8).lines())
+        .containsExactly("armgals: 'picky' is one atom: --atoms does not apply");
+  }
+
+  @Test
+  void newWithABadNameIsOneLineAndStatusTwo() {
+    Result r = run("new", "My-Bot");
+    assertThat(r.status()).isEqualTo(Armgals.USAGE);
+    assertThat(r.err().lines()).hasSize(1);
+    assertThat(r.err()).startsWith("armgals: 'My-Bot' is not a robot name");
+  }
+
+  @Test
+  void newIntoAnExistingDirectoryIsOneLineAndStatusTwo(@TempDir Path dir) {
+    Result r = run("new", "bot", "--dir", dir.toString());
+    assertThat(r.status()).isEqualTo(Armgals.USAGE);
+    assertThat(r.err().lines())
+        .containsExactly(
+            "armgals: " + dir + " already exists; give another name, or another place with --dir");
+  }
+
+  @Test
+  void newWritesTheSkeletonAndSaysHowToRunIt(@TempDir Path dir) {
+    Path target = dir.resolve("bot");
+    Result r = run("new", "bot", "--dir", target.toString());
+    assertThat(r.status()).as(r.err()).isZero();
+    assertThat(r.out())
+        .contains("wrote the robot 'bot' in " + target)
+        .contains("mvn -q compile exec:java");
+    assertThat(target.resolve("src/main/java/bot/BotRobot.java")).exists();
+  }
+
+  @Test
+  void anUnknownCommandIsOneLineAndStatusTwo() {
+    Result r = run("fly");
+    assertThat(r.status()).isEqualTo(Armgals.USAGE);
+    assertThat(r.err().lines()).hasSize(1);
+    assertThat(r.err()).contains("fly");
   }
 
   @Test

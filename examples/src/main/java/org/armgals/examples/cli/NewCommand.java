@@ -1,0 +1,169 @@
+package org.armgals.examples.cli;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.PrintStream;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Properties;
+import java.util.concurrent.Callable;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import javax.lang.model.SourceVersion;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/**
+ * {@code armgals new <name>}: writes the skeleton of a robot, a small Maven project whose sources
+ * follow the four steps of §5.4 (signals, modules, a robot class that registers its schemas, and a
+ * simulated example with a {@code main}) and that compiles as written. The templates are resources
+ * next to this class ({@code skeleton/*.tmpl}); their placeholders are {@code ${name}}, {@code
+ * ${Name}}, {@code ${package}} and {@code ${version}}, the version of armgals that writes them.
+ */
+@Command(
+    name = "new",
+    description = "Writes the skeleton of a new robot, ready to compile and run.")
+final class NewCommand implements Callable<Integer> {
+  static final Pattern NAME = Pattern.compile("[a-z][a-z0-9]{0,39}");
+
+  private static final Pattern PLACEHOLDER = Pattern.compile("\\$\\{(\\w+)}");
+
+  /** The lines that mark the regions docs/user-guide.md shows; a skeleton goes without them. */
+  private static final Pattern TAG_LINE = Pattern.compile("(?m)^[ \\t]*// (tag|end)::\\w+\\[]\\R");
+
+  /** Template, and where it goes: {@code JAVA} for the package's source directory. */
+  private static final List<String[]> FILES =
+      List.of(
+          new String[] {"pom.xml.tmpl", "pom.xml"},
+          new String[] {"README.md.tmpl", "README.md"},
+          new String[] {"Signals.java.tmpl", "JAVA/Signals.java"},
+          new String[] {"Modules.java.tmpl", "JAVA/Modules.java"},
+          new String[] {"Robot.java.tmpl", "JAVA/${Name}Robot.java"},
+          new String[] {"Example.java.tmpl", "JAVA/${Name}Example.java"});
+
+  private final PrintStream out;
+
+  @Parameters(
+      index = "0",
+      paramLabel = "<name>",
+      description = "the robot's name: a lower-case letter, then lower-case letters or digits")
+  String name = "";
+
+  @Option(
+      names = "--dir",
+      paramLabel = "<dir>",
+      description = "where to write it (default: ./<name>); must not exist")
+  Path dir;
+
+  NewCommand(PrintStream out) {
+    this.out = out;
+  }
+
+  @Override
+  public Integer call() {
+    Path target = dir == null ? Path.of(name) : dir;
+    List<Path> written = write(name, target, version());
+    out.println("wrote the robot '" + name + "' in " + target + ":");
+    for (Path file : written) {
+      out.println("  " + target.relativize(file));
+    }
+    out.println(
+        "run it: cd "
+            + target
+            + " && mvn -q compile exec:java   (see its README.md; docs/user-guide.md of armgals)");
+    return 0;
+  }
+
+  /**
+   * Writes the skeleton of robot {@code name} into the new directory {@code target} and answers the
+   * files written.
+   *
+   * @throws UsageException if the name is not one, or {@code target} exists
+   */
+  static List<Path> write(String name, Path target, String version) {
+    check(name);
+    if (Files.exists(target)) {
+      throw new UsageException(
+          target + " already exists; give another name, or another place with --dir");
+    }
+    String upper = name.substring(0, 1).toUpperCase(Locale.ROOT) + name.substring(1);
+    Map<String, String> values =
+        Map.of("name", name, "Name", upper, "package", name, "version", version);
+    Path sources = target.resolve("src/main/java").resolve(name);
+    try {
+      Files.createDirectories(sources);
+      List<Path> written = new java.util.ArrayList<>();
+      for (String[] file : FILES) {
+        String place = fill(file[1], values);
+        Path path =
+            place.startsWith("JAVA/")
+                ? sources.resolve(place.substring("JAVA/".length()))
+                : target.resolve(place);
+        String text = TAG_LINE.matcher(template(file[0])).replaceAll("");
+        Files.writeString(path, fill(text, values), StandardCharsets.UTF_8);
+        written.add(path);
+      }
+      return List.copyOf(written);
+    } catch (IOException e) {
+      throw new UncheckedIOException("cannot write the skeleton in " + target, e);
+    }
+  }
+
+  private static void check(String name) {
+    if (!NAME.matcher(name).matches()) {
+      throw new UsageException(
+          "'"
+              + name
+              + "' is not a robot name: a lower-case letter, then up to 39 lower-case letters or"
+              + " digits (it names the robot, its Java package and its directory)");
+    }
+    if (SourceVersion.isKeyword(name)) {
+      throw new UsageException("'" + name + "' is a Java keyword; choose another robot name");
+    }
+  }
+
+  /** The version of armgals, as the build wrote it into {@code version.properties}. */
+  static String version() {
+    Properties properties = new Properties();
+    try (InputStream in = NewCommand.class.getResourceAsStream("version.properties")) {
+      if (in == null) {
+        throw new IllegalStateException("version.properties is missing from the armgals jar");
+      }
+      properties.load(in);
+    } catch (IOException e) {
+      throw new UncheckedIOException("cannot read version.properties", e);
+    }
+    String version = properties.getProperty("version", "");
+    if (version.isEmpty() || version.contains("${")) {
+      throw new IllegalStateException("version.properties was not filled in by the build");
+    }
+    return version;
+  }
+
+  private static String template(String file) throws IOException {
+    try (InputStream in = NewCommand.class.getResourceAsStream("skeleton/" + file)) {
+      if (in == null) {
+        throw new IllegalStateException("the template skeleton/" + file + " is missing");
+      }
+      return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+    }
+  }
+
+  /** {@code text} with each known {@code ${key}} replaced; unknown ones (Maven's) stay. */
+  static String fill(String text, Map<String, String> values) {
+    Matcher m = PLACEHOLDER.matcher(text);
+    StringBuilder b = new StringBuilder();
+    while (m.find()) {
+      String value = values.get(m.group(1));
+      m.appendReplacement(b, Matcher.quoteReplacement(value == null ? m.group() : value));
+    }
+    m.appendTail(b);
+    return b.toString();
+  }
+}

@@ -1,0 +1,86 @@
+package org.armgals.examples.cli;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.math.BigDecimal;
+import java.nio.charset.CharacterCodingException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.armgals.examples.sim.Replay;
+import org.armgals.examples.sim.SimExample;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Parameters;
+
+/**
+ * {@code armgals replay <trace>}: runs again the run that wrote a trace and says whether it wrote
+ * the same trace, bit for bit (status 0) or from which cycle it differs (status 1).
+ */
+@Command(
+    name = "replay",
+    description = "Re-runs the run that wrote a trace and says whether it reproduces it exactly.")
+final class ReplayCommand implements Callable<Integer> {
+  private final Catalog catalog;
+  private final PrintStream out;
+
+  @Parameters(index = "0", paramLabel = "<trace>", description = "a trace.jsonl of 'armgals run'")
+  Path trace = Path.of("");
+
+  ReplayCommand(Catalog catalog, PrintStream out) {
+    this.catalog = catalog;
+    this.out = out;
+  }
+
+  @Override
+  public Integer call() {
+    String text = read(trace);
+    String first = text.lines().findFirst().orElse("");
+    Replay.Header header;
+    try {
+      header = Replay.Header.parse(first);
+    } catch (IllegalArgumentException e) {
+      throw new UsageException(trace + ": " + e.getMessage());
+    }
+    Example example =
+        catalog
+            .find(header.example())
+            .orElseThrow(
+                () ->
+                    new UsageException(
+                        trace
+                            + " is a trace of example '"
+                            + header.example()
+                            + "', which this armgals does not have; 'armgals list' shows those it"
+                            + " has"));
+    if (!(example instanceof SimExample simulated)) {
+      throw new UsageException(
+          "'" + example.name() + "' does not run on the simulator: it has no trace to replay");
+    }
+    out.printf(
+        Locale.ROOT,
+        "replaying %s: '%s', %d cycles of %s ms, seed %d%n",
+        trace,
+        example.name(),
+        header.cycles(),
+        BigDecimal.valueOf(header.period().toNanos(), 6).stripTrailingZeros().toPlainString(),
+        header.seed());
+    Replay.Verdict verdict = Replay.replay(simulated, header, text);
+    out.println(verdict.line());
+    return verdict instanceof Replay.Reproduced ? 0 : Armgals.FAILED;
+  }
+
+  private static String read(Path trace) {
+    try {
+      return Files.readString(trace, StandardCharsets.UTF_8);
+    } catch (NoSuchFileException e) {
+      throw new UsageException("no trace at " + trace + "; 'armgals run' leaves one in its --out");
+    } catch (CharacterCodingException e) {
+      throw new UsageException(trace + ": not an armgals trace: it is not UTF-8 text");
+    } catch (IOException e) {
+      throw new UsageException("cannot read " + trace + ": " + e);
+    }
+  }
+}

@@ -1,0 +1,186 @@
+package org.armgals.examples.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.io.File;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.io.PrintStream;
+import java.net.URI;
+import java.net.URL;
+import java.net.URLClassLoader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.OptionalLong;
+import java.util.jar.JarFile;
+import java.util.jar.Manifest;
+import java.util.stream.Stream;
+import javax.tools.DiagnosticCollector;
+import javax.tools.JavaCompiler;
+import javax.tools.JavaFileObject;
+import javax.tools.StandardJavaFileManager;
+import javax.tools.ToolProvider;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code armgals new} writes a robot skeleton that compiles as written, and refuses bad names. */
+class NewCommandTest {
+  @TempDir Path dir;
+
+  @Test
+  void theSkeletonCompilesWithoutAWarning() throws IOException {
+    Path target = dir.resolve("mybot");
+    List<Path> written = NewCommand.write("mybot", target, "9.9.9-TEST");
+
+    assertThat(written)
+        .extracting(p -> target.relativize(p).toString().replace(File.separatorChar, '/'))
+        .containsExactly(
+            "pom.xml",
+            "README.md",
+            "src/main/java/mybot/Signals.java",
+            "src/main/java/mybot/Modules.java",
+            "src/main/java/mybot/MybotRobot.java",
+            "src/main/java/mybot/MybotExample.java");
+    String pom = Files.readString(target.resolve("pom.xml"), StandardCharsets.UTF_8);
+    assertThat(pom)
+        .contains("<armgals.version>9.9.9-TEST</armgals.version>")
+        .contains("<artifactId>examples</artifactId>")
+        .contains("<artifactId>maam-framework</artifactId>")
+        .contains("<artifactId>maam-sim</artifactId>")
+        .contains("<version>${armgals.version}</version>")
+        .contains("<mainClass>mybot.MybotExample</mainClass>");
+    for (Path file : written) {
+      assertThat(Files.readString(file, StandardCharsets.UTF_8))
+          .as("%s has no placeholder left but Maven's", file)
+          .doesNotContainPattern("\\$\\{(name|Name|package|version)}")
+          .doesNotContain("// tag::");
+    }
+
+    assertThat(compile(written.stream().filter(p -> p.toString().endsWith(".java")).toList()))
+        .isEmpty();
+    assertThat(dir.resolve("classes/mybot/MybotExample.class")).exists();
+    assertThat(runBriefly()).contains(new Summary.Entry("robot cycles", "10"));
+  }
+
+  /** Runs the compiled skeleton's example for ten cycles; answers its summary. */
+  private List<Summary.Entry> runBriefly() throws IOException {
+    try (URLClassLoader loader =
+        new URLClassLoader(
+            new URL[] {dir.resolve("classes").toUri().toURL()}, getClass().getClassLoader())) {
+      Example example =
+          (Example) loader.loadClass("mybot.MybotExample").getDeclaredConstructor().newInstance();
+      RunSettings settings =
+          new RunSettings(
+              OptionalLong.of(10),
+              Optional.empty(),
+              Duration.ofMillis(10),
+              1,
+              Optional.empty(),
+              false,
+              Optional.empty(),
+              dir.resolve("run"));
+      return example.run(settings, new PrintStream(OutputStream.nullOutputStream())).entries();
+    } catch (ReflectiveOperationException e) {
+      throw new AssertionError("the skeleton's example cannot be made", e);
+    }
+  }
+
+  @Test
+  void theVersionIsTheBuildsOwn() {
+    assertThat(NewCommand.version()).matches("\\d+\\.\\d+\\.\\d+.*");
+  }
+
+  @Test
+  void badNamesAndExistingDirectoriesAreRefusedWritingNothing() throws IOException {
+    for (String bad : List.of("MyBot", "my-bot", "9bot", "", "class")) {
+      assertThatThrownBy(() -> NewCommand.write(bad, dir.resolve("x"), "1"))
+          .as(bad)
+          .isInstanceOf(UsageException.class)
+          .hasMessageContaining("'" + bad + "'");
+    }
+    Path existing = Files.createDirectory(dir.resolve("taken"));
+    assertThatThrownBy(() -> NewCommand.write("taken", existing, "1"))
+        .isInstanceOf(UsageException.class)
+        .hasMessageContaining("already exists");
+    assertThat(dir.resolve("x")).doesNotExist();
+    try (Stream<Path> files = Files.list(existing)) {
+      assertThat(files).isEmpty();
+    }
+  }
+
+  @Test
+  void placeholdersMavenOwnsAreLeftAlone() {
+    assertThat(NewCommand.fill("${name}: ${project.version} ${other}", Map.of("name", "bot")))
+        .isEqualTo("bot: ${project.version} ${other}");
+  }
+
+  /** Compiles {@code sources} against the test's class path; answers the diagnostics. */
+  private List<String> compile(List<Path> sources) throws IOException {
+    JavaCompiler compiler = ToolProvider.getSystemJavaCompiler();
+    DiagnosticCollector<JavaFileObject> diagnostics = new DiagnosticCollector<>();
+    Path classes = Files.createDirectories(dir.resolve("classes"));
+    try (StandardJavaFileManager files =
+        compiler.getStandardFileManager(diagnostics, Locale.ROOT, StandardCharsets.UTF_8)) {
+      List<String> options =
+          List.of(
+              "-Xlint:all",
+              "-proc:none",
+              "--release",
+              "21",
+              "-d",
+              classes.toString(),
+              "-classpath",
+              String.join(File.pathSeparator, classPath()));
+      boolean ok =
+          compiler
+              .getTask(
+                  null,
+                  files,
+                  diagnostics,
+                  options,
+                  null,
+                  files.getJavaFileObjectsFromPaths(sources))
+              .call();
+      List<String> found = new ArrayList<>();
+      diagnostics.getDiagnostics().forEach(d -> found.add(d.toString()));
+      if (!ok && found.isEmpty()) {
+        found.add("the compiler failed without a diagnostic");
+      }
+      return found;
+    }
+  }
+
+  /**
+   * The test's class path, the entries of a manifest-only jar (as surefire may launch tests with)
+   * included.
+   */
+  private static List<String> classPath() throws IOException {
+    List<String> entries = new ArrayList<>();
+    for (String entry : System.getProperty("java.class.path").split(File.pathSeparator)) {
+      entries.add(entry);
+      if (!entry.endsWith(".jar")) {
+        continue;
+      }
+      try (JarFile jar = new JarFile(entry)) {
+        Manifest manifest = jar.getManifest();
+        String more = manifest == null ? null : manifest.getMainAttributes().getValue("Class-Path");
+        if (more == null) {
+          continue;
+        }
+        for (String url : more.trim().split("\\s+")) {
+          URI uri = Path.of(entry).toUri().resolve(url);
+          entries.add(Path.of(uri).toString());
+        }
+      }
+    }
+    return entries;
+  }
+}
