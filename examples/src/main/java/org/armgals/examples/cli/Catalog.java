@@ -5,6 +5,7 @@ import static java.util.Objects.requireNonNull;
 import java.util.List;
 import java.util.Optional;
 import java.util.stream.Collectors;
+import org.armgals.examples.robots.Distributed;
 
 /** The examples {@code armgals} knows, in the order {@code armgals list} shows them. */
 public final class Catalog {
@@ -16,7 +17,7 @@ public final class Catalog {
 
   /** The examples shipped with armgals. */
   public static Catalog standard() {
-    return of(List.of(new DemoExample()));
+    return of(List.of(new DemoExample(), new Distributed()));
   }
 
   /**
