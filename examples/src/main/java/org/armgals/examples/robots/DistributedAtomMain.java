@@ -18,9 +18,9 @@ import org.armgals.maam.AbstractRobot;
  * real time, and leaves when its standard input ends (the world closes it, or ends).
  *
  * <p>The robot's entity has a second reaction, {@code link}, that runs after the robot's cycle in
- * every release: it feeds the readings taken at the release to the body, for the robot's next cycle,
- * and sends the world the commands of the cycle just run, if they answer new readings (and, once,
- * that the atom has joined).
+ * every release: it feeds the readings taken at the release to the body, for the robot's next
+ * cycle, and sends the world the commands of the cycle just run, if they answer new readings (and,
+ * once, that the atom has joined).
  *
  * <p>Arguments: atom id, index in the chain, atoms in the chain, broker URL, topic prefix, the
  * world's address (runtime and id), the island's period in nanoseconds. The broker's credentials,
@@ -47,7 +47,8 @@ final class DistributedAtomMain {
 
   public static void main(String[] args) throws IOException {
     if (args.length != 8) {
-      System.err.println("expected 8 arguments (see DistributedAtomMain's javadoc), got " + args.length);
+      System.err.println(
+          "expected 8 arguments (see DistributedAtomMain's javadoc), got " + args.length);
       System.exit(2);
     }
     int atom = Integer.parseInt(args[0]);
@@ -60,7 +61,8 @@ final class DistributedAtomMain {
     long pid = ProcessHandle.current().pid();
     String name = "atom" + atom + "-" + pid;
     String user = System.getenv(USER);
-    JmsTransport.Builder builder = JmsTransport.builder().prefix(prefix).allow(DistributedWire.ALLOWED);
+    JmsTransport.Builder builder =
+        JmsTransport.builder().prefix(prefix).allow(DistributedWire.ALLOWED);
     if (user == null) {
       builder.broker(url);
     } else {
@@ -70,19 +72,24 @@ final class DistributedAtomMain {
     try (JmsTransport transport = builder.build()) {
       ActiveRuntime runtime =
           ActiveRuntime.builder().name(name).workers(1).jmx(false).transport(transport).build();
-      try (Island island = Island.builder("atom" + atom, runtime).period(period).jmx(false).build()) {
+      try (Island island =
+          Island.builder("atom" + atom, runtime).period(period).jmx(false).build()) {
         DistributedRemoteBody body = new DistributedRemoteBody(atom);
         DistributedCrawler robot = new DistributedCrawler(body, index, count);
         ReactiveEntity<AbstractRobot> entity = robot.start(island);
         entity.addReaction(
-            "link", new DistributedLink(world, body, new DistributedWire.Joined(atom, entity.address(), pid, name)));
+            "link",
+            new DistributedLink(
+                world, body, new DistributedWire.Joined(atom, entity.address(), pid, name)));
         island.start();
-        System.out.println("atom " + atom + " runs on island " + island.name() + " of runtime " + name);
+        System.out.println(
+            "atom " + atom + " runs on island " + island.name() + " of runtime " + name);
         InputStream in = System.in;
         while (in.read() != -1) {
           // The world says nothing on this pipe: its end is the signal to leave.
         }
-        System.out.println("atom " + atom + " leaves after " + robot.cycles() + " cycles, " + island.stats());
+        System.out.println(
+            "atom " + atom + " leaves after " + robot.cycles() + " cycles, " + island.stats());
       } finally {
         runtime.shutdown(ShutdownMode.CANCEL, Duration.ofSeconds(5));
       }

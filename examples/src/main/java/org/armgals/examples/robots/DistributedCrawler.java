@@ -17,11 +17,11 @@ import org.armgals.maam.spi.LegAngles;
 
 /**
  * The robot of one atom of {@link Distributed}'s chain, in the atom's own runtime: one schema,
- * {@code crawl}, where {@code clock} (a perceptor of the world's time) feeds {@code gait} (a reactor
- * placing the atom in the chain's wave, {@link DistributedGait}), which feeds {@code legs} (an
- * actuator driving the two lower legs). The phase comes from the world's time in the readings, not
- * from the robot's own clock: the robot answers each reading with the same commands however late it
- * comes, so the world's run does not depend on when the atom's island ticks.
+ * {@code crawl}, where {@code clock} (a perceptor of the world's time) feeds {@code gait} (a
+ * reactor placing the atom in the chain's wave, {@link DistributedGait}), which feeds {@code legs}
+ * (an actuator driving the two lower legs). The phase comes from the world's time in the readings,
+ * not from the robot's own clock: the robot answers each reading with the same commands however
+ * late it comes, so the world's run does not depend on when the atom's island ticks.
  */
 final class DistributedCrawler extends AbstractRobot {
   static final Port<Phase> PHASE = Port.of("phase", Phase.class);
@@ -34,7 +34,10 @@ final class DistributedCrawler extends AbstractRobot {
   record Stride(LegAngles minusZ, LegAngles minusY) implements Signal {}
 
   DistributedCrawler(DistributedRemoteBody body, int index, int count) {
-    super("crawler-" + body.id(), body, () -> Math.max(0, body.read(DistributedRemoteBody.WORLD_TIME)));
+    super(
+        "crawler-" + body.id(),
+        body,
+        () -> Math.max(0, body.read(DistributedRemoteBody.WORLD_TIME)));
     WorldClock clock = new WorldClock("clock", index, count);
     Gait gait = new Gait("gait");
     LegDrive legs = new LegDrive("legs");

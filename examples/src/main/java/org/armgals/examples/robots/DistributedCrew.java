@@ -66,8 +66,8 @@ final class DistributedCrew implements Crew {
   }
 
   /**
-   * Starts the broker (unless {@code url} names one), the world's runtime and the atoms' JVMs, waits
-   * until every atom has joined, and installs the controllers.
+   * Starts the broker (unless {@code url} names one), the world's runtime and the atoms' JVMs,
+   * waits until every atom has joined, and installs the controllers.
    *
    * @param url an external broker, or null for an embedded one
    * @param logs the directory of the atoms' logs
@@ -215,8 +215,7 @@ final class DistributedCrew implements Crew {
     ActiveRuntime r = requireNonNull(runtime, "runtime");
     Address from = requireNonNull(mailbox, "mailbox").address();
     for (DistributedWire.Joined j : joined) {
-      r.ref(j.robot())
-          .send(new Emission(from, j.robot(), readings(j.atom(), cycle)));
+      r.ref(j.robot()).send(new Emission(from, j.robot(), readings(j.atom(), cycle)));
     }
   }
 

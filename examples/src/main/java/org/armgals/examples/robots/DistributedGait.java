@@ -4,9 +4,9 @@ import org.armgals.maam.spi.LegAngles;
 
 /**
  * The crawl of {@link Distributed}'s chain: each atom lies rolled 45° about the chain's axis on its
- * two lower legs ({@code -z} and {@code -y}), which row in opposite phase. A leg's stroke pushes its
- * tip straight through the cone's axis from the front to the back (the leg is longest, so it bears
- * the weight); its return goes round the cone's edge (the leg is shorter, so it slides back
+ * two lower legs ({@code -z} and {@code -y}), which row in opposite phase. A leg's stroke pushes
+ * its tip straight through the cone's axis from the front to the back (the leg is longest, so it
+ * bears the weight); its return goes round the cone's edge (the leg is shorter, so it slides back
  * unloaded). Atom {@code i} of {@code n} is {@code i / n} of a stroke behind the head. Found by
  * trial on the simulator: the chain crawls towards {@code -x}, about 2.5 cm/s with two atoms.
  */

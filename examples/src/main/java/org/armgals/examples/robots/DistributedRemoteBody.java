@@ -94,15 +94,14 @@ final class DistributedRemoteBody implements Body {
       int i = leg.ordinal();
       if (sensor.equals(Atom.angles(leg))) {
         return sensor.cast(
-            r == null
-                ? LegAngles.AXIS
-                : new LegAngles(r.elevations().get(i), r.azimuths().get(i)));
+            r == null ? LegAngles.AXIS : new LegAngles(r.elevations().get(i), r.azimuths().get(i)));
       }
       if (sensor.equals(Atom.contact(leg))) {
         return sensor.cast(r != null && r.contacts().get(i));
       }
     }
-    throw new IllegalArgumentException("atom " + id() + " has no sensor " + sensor + ": " + SENSORS);
+    throw new IllegalArgumentException(
+        "atom " + id() + " has no sensor " + sensor + ": " + SENSORS);
   }
 
   @Override

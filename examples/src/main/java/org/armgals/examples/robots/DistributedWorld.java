@@ -79,8 +79,9 @@ final class DistributedWorld implements EventProcessor {
   }
 
   /**
-   * Waits until atom {@code atom} has answered the readings of {@code cycle}, its process has ended,
-   * or {@code timeout} has passed, and answers the latest commands it sent (null if none yet).
+   * Waits until atom {@code atom} has answered the readings of {@code cycle}, its process has
+   * ended, or {@code timeout} has passed, and answers the latest commands it sent (null if none
+   * yet).
    */
   synchronized DistributedWire.@Nullable Commands awaitCommands(
       int atom, long cycle, Duration timeout) throws InterruptedException {
