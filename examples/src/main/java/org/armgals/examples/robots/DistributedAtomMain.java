@@ -94,6 +94,5 @@ final class DistributedAtomMain {
         runtime.shutdown(ShutdownMode.CANCEL, Duration.ofSeconds(5));
       }
     }
-    System.exit(0);
   }
 }

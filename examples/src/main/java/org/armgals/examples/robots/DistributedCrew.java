@@ -59,6 +59,7 @@ final class DistributedCrew implements Crew {
   private @Nullable ActiveObject<DistributedWorld> mailbox;
   private long published = -1;
   private long missed;
+  private long awaited;
 
   private DistributedCrew(Simulation sim, Duration wait) {
     this.sim = sim;
@@ -203,6 +204,7 @@ final class DistributedCrew implements Crew {
       Thread.currentThread().interrupt();
       throw new IllegalStateException("interrupted while waiting for atom " + atom, e);
     }
+    awaited++;
     if (commands == null || commands.cycle() < cycle) {
       missed++;
     }
@@ -274,6 +276,7 @@ final class DistributedCrew implements Crew {
         new Summary.Entry(
             "atom processes",
             joined.stream().map(j -> Long.toString(j.pid())).collect(Collectors.joining(", "))),
+        new Summary.Entry("late answers", missed + " of " + awaited + " (atoms × cycles)"),
         new Summary.Entry(
             "world waits",
             String.format(Locale.ROOT, "up to %d ms per cycle for each atom", wait.toMillis())));
