@@ -37,7 +37,7 @@ import org.jspecify.annotations.Nullable;
  * it. Built and used on the thread that runs the simulation.
  *
  * <p>Each cycle, the first controller to run sends every atom its readings; then each atom's
- * controller waits for the commands that answer them, at most {@link #wait} (lock step: generous;
+ * controller waits for the commands that answer them, at most its patience (lock step: generous;
  * paced to real time: one period), and applies the latest commands it has. A cycle whose answer did
  * not come in time is a missed cycle of that atom.
  */
@@ -49,7 +49,7 @@ final class DistributedCrew implements Crew {
   static final Duration LOCKSTEP_WAIT = Duration.ofSeconds(2);
 
   private final Simulation sim;
-  private final Duration wait;
+  private final Duration patience;
   private final List<DistributedAtomProcess> processes = new ArrayList<>();
   private final List<DistributedWire.Joined> joined = new ArrayList<>();
   private @Nullable EmbeddedBroker broker;
@@ -61,9 +61,9 @@ final class DistributedCrew implements Crew {
   private long missed;
   private long awaited;
 
-  private DistributedCrew(Simulation sim, Duration wait) {
+  private DistributedCrew(Simulation sim, Duration patience) {
     this.sim = sim;
-    this.wait = wait;
+    this.patience = patience;
   }
 
   /**
@@ -199,7 +199,7 @@ final class DistributedCrew implements Crew {
     }
     DistributedWire.Commands commands;
     try {
-      commands = w.awaitCommands(atom, cycle, wait);
+      commands = w.awaitCommands(atom, cycle, patience);
     } catch (InterruptedException e) {
       Thread.currentThread().interrupt();
       throw new IllegalStateException("interrupted while waiting for atom " + atom, e);
@@ -279,7 +279,8 @@ final class DistributedCrew implements Crew {
         new Summary.Entry("late answers", missed + " of " + awaited + " (atoms × cycles)"),
         new Summary.Entry(
             "world waits",
-            String.format(Locale.ROOT, "up to %d ms per cycle for each atom", wait.toMillis())));
+            String.format(
+                Locale.ROOT, "up to %d ms per cycle for each atom", patience.toMillis())));
   }
 
   /** Stops the atoms' JVMs (and waits for them), the world's runtime, the transport, the broker. */
