@@ -5,7 +5,10 @@ import static java.util.Objects.requireNonNull;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.net.InetAddress;
+import java.net.InetSocketAddress;
 import java.net.ServerSocket;
+import java.net.Socket;
+import java.net.URI;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -47,6 +50,9 @@ final class DistributedCrew implements Crew {
 
   /** How long the world waits for an atom's answer in lock step. */
   static final Duration LOCKSTEP_WAIT = Duration.ofSeconds(2);
+
+  /** How long the probe of an external broker waits for its host to answer. */
+  private static final int PROBE_TIMEOUT_MILLIS = 3000;
 
   private final Simulation sim;
   private final Duration patience;
@@ -116,6 +122,9 @@ final class DistributedCrew implements Crew {
     JmsTransport.Builder builder =
         JmsTransport.builder().prefix(prefix).allow(DistributedWire.ALLOWED);
     try {
+      if (url != null) {
+        probe(url);
+      }
       if (user.isEmpty()) {
         builder.broker(brokerUrl);
       } else {
@@ -303,6 +312,23 @@ final class DistributedCrew implements Crew {
     EmbeddedBroker b = broker;
     if (b != null) {
       b.close();
+    }
+  }
+
+  /**
+   * Fails fast when nothing answers at a {@code tcp://} broker's address: Artemis would wait for
+   * the cluster topology for its call time-out (30 s) before giving up on a host that does not
+   * answer.
+   */
+  private static void probe(String url) {
+    URI uri = URI.create(url);
+    if (!"tcp".equals(uri.getScheme()) || uri.getHost() == null || uri.getPort() < 0) {
+      return;
+    }
+    try (Socket socket = new Socket()) {
+      socket.connect(new InetSocketAddress(uri.getHost(), uri.getPort()), PROBE_TIMEOUT_MILLIS);
+    } catch (IOException e) {
+      throw new IllegalStateException(e.getMessage() == null ? e.toString() : e.getMessage(), e);
     }
   }
 
