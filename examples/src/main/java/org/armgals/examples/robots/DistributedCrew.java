@@ -175,7 +175,8 @@ final class DistributedCrew implements Crew {
     for (DistributedAtomProcess p : processes) {
       DistributedWire.Joined j = awaitJoined(w, p);
       joined.add(j);
-      journal.note(j.atom(), "runs in process " + j.pid() + ", runtime " + j.runtime());
+      // No pid here: a run in lock step leaves the same trace every time.
+      journal.note(j.atom(), "its robot joined from a JVM of its own");
     }
     for (int atom : ids) {
       sim.setController(atom, (body, cycle) -> control(atom, cycle));
