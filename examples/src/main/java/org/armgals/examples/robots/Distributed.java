@@ -21,7 +21,7 @@ import org.armgals.maam.sim.Simulation;
  * <p>The process of {@code armgals run} holds the world (the simulation) and, unless {@code
  * --broker} names one, an embedded broker on a free port of 127.0.0.1. Each cycle the world sends
  * every atom its sensor readings and waits for the leg targets its robot answers; an answer that
- * does not come in time is a missed cycle. In lock step (the default) the world waits up to two
+ * does not come in time is a missed cycle. In lock step (the default) the world waits up to ten
  * seconds, so the run is the same as if the robots ran in the world's own cycle; with {@code
  * --realtime} it waits one period and goes on with the commands it has. The credentials of an
  * external broker, if it needs any, come from {@code ARMGALS_BROKER_USER} and {@code

@@ -48,8 +48,11 @@ final class DistributedCrew implements Crew {
   /** How long the atoms' JVMs have to start and join. */
   static final Duration JOIN = Duration.ofSeconds(90);
 
-  /** How long the world waits for an atom's answer in lock step. */
-  static final Duration LOCKSTEP_WAIT = Duration.ofSeconds(2);
+  /**
+   * How long the world waits for an atom's answer in lock step: long enough for the first round
+   * trip (class loading in three JVMs) and for the stalls of a loaded machine, seen over 2 s.
+   */
+  static final Duration LOCKSTEP_WAIT = Duration.ofSeconds(10);
 
   /** How long the probe of an external broker waits for its host to answer. */
   private static final int PROBE_TIMEOUT_MILLIS = 3000;

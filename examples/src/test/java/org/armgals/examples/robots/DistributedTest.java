@@ -70,7 +70,7 @@ class DistributedTest {
         .containsExactlyElementsOf(children.stream().map(ProcessHandle::pid).toList());
     assertThat(children).noneMatch(ProcessHandle::isAlive);
     // In lock step the world waits for every answer, so none is missed on a quiet machine; a
-    // loaded one may miss a few (an answer later than two seconds), not most.
+    // loaded one may miss a few (an answer later than ten seconds), not most.
     assertThat(missed).isLessThan(30);
     // Seen: 5.7 cm towards -x in 1.5 s, as with the robots in the world's own process (lock step
     // makes it the same run), and 2.5 cm of sideways drift.
