@@ -5,7 +5,11 @@ import static java.util.Objects.requireNonNull;
 import java.util.List;
 import java.util.Optional;
 import java.util.stream.Collectors;
+import org.armgals.examples.robots.Caterpillar;
 import org.armgals.examples.robots.Distributed;
+import org.armgals.examples.robots.EnergySaver;
+import org.armgals.examples.robots.ObstacleRobot;
+import org.armgals.examples.robots.Walker;
 
 /** The examples {@code armgals} knows, in the order {@code armgals list} shows them. */
 public final class Catalog {
@@ -17,7 +21,15 @@ public final class Catalog {
 
   /** The examples shipped with armgals. */
   public static Catalog standard() {
-    return of(List.of(new DemoExample(), new Distributed()));
+    return of(
+        List.of(
+            new Walker(),
+            new Caterpillar(),
+            new ObstacleRobot(),
+            new EnergySaver(),
+            EnergySaver.withoutMetaLevel(),
+            new Distributed(),
+            new DemoExample()));
   }
 
   /**

@@ -1,0 +1,152 @@
+package org.armgals.examples.robots;
+
+import static java.util.Objects.requireNonNull;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import org.armgals.examples.cli.RunSettings;
+import org.armgals.examples.cli.Summary;
+import org.armgals.examples.sim.Crew;
+import org.armgals.examples.sim.Journal;
+import org.armgals.examples.sim.SimExample;
+import org.armgals.maam.sim.Scene;
+import org.armgals.maam.sim.Scenes;
+import org.armgals.maam.sim.Simulation;
+import org.armgals.maam.spi.Atom;
+import org.armgals.maam.spi.LegBinding;
+
+/**
+ * {@code caterpillar}: a chain of atoms bound leg to leg along x crawls forward with a wave gait,
+ * the paper's modular robot (§1, §5.4). Every atom runs the same robot program, a {@link
+ * CaterpillarSegment}; the head beats the rhythm and each segment passes it to the one behind
+ * through their bound legs (neighbour messages), a quarter step later, so a wave runs down the
+ * chain. The head's behavioral meta level ({@link CaterpillarMeta}) watches the progress of each
+ * step and lengthens the stride while it is too short, through the head, whose rhythm carries the
+ * new stride down the chain; each change is told to the journal.
+ *
+ * <p>{@code --atoms n}: the chain's length, 2 to 8 (default 4).
+ */
+public final class Caterpillar implements SimExample {
+
+  /** The chain's length when the settings do not give one. */
+  public static final int DEFAULT_ATOMS = 4;
+
+  /** The shortest chain. */
+  public static final int MIN_ATOMS = 2;
+
+  /** The longest chain. */
+  public static final int MAX_ATOMS = 8;
+
+  private static final double SPACING = 0.22;
+
+  @Override
+  public String name() {
+    return "caterpillar";
+  }
+
+  @Override
+  public String summary() {
+    return "a chain of atoms crawls with a wave passed leg to leg; its meta level lengthens the"
+        + " stride";
+  }
+
+  @Override
+  public Duration defaultDuration() {
+    return Duration.ofSeconds(10);
+  }
+
+  /**
+   * A chain of {@code --atoms} atoms (default 4) along x, bound {@code i:+x} to {@code i+1:-x}; the
+   * head is the last, at the largest x.
+   *
+   * @throws IllegalArgumentException if {@code --atoms} is not between 2 and 8
+   */
+  @Override
+  public Scene scene(RunSettings settings) {
+    requireNonNull(settings, "settings");
+    int n = atoms(settings);
+    StringBuilder text = new StringBuilder("scene caterpillar").append(n).append('\n');
+    for (int id = 1; id <= n; id++) {
+      text.append(
+          String.format(
+              Locale.ROOT,
+              "atom %d %.2f 0 %.3f 1 0 0 %.0f%n",
+              id,
+              (id - 1) * SPACING,
+              CaterpillarTuning.HEIGHT,
+              CaterpillarTuning.ROLL_DEGREES));
+    }
+    for (int id = 1; id < n; id++) {
+      text.append(String.format(Locale.ROOT, "bond %d:+x %d:-x%n", id, id + 1));
+    }
+    return Scenes.parse(text.toString());
+  }
+
+  @Override
+  public Crew start(Simulation sim, RunSettings settings, Journal journal) {
+    requireNonNull(sim, "sim");
+    requireNonNull(settings, "settings");
+    requireNonNull(journal, "journal");
+    List<Integer> ids = sim.atomIds();
+    double cycleSeconds = settings.period().toNanos() / 1e9;
+    int head = ids.get(ids.size() - 1);
+    List<CaterpillarSegment> segments = new ArrayList<>();
+    CaterpillarMeta meta = null;
+    for (int i = 0; i < ids.size(); i++) {
+      int id = ids.get(i);
+      CaterpillarSegment segment =
+          new CaterpillarSegment(
+              "segment" + id,
+              GaitsBody.of(sim, id),
+              sim::timeNanos,
+              ids.size() - 1 - i,
+              cycleSeconds);
+      if (id == head) {
+        meta = new CaterpillarMeta(segment.builtPacemaker(), journal, id);
+        segment.watchedBy(meta);
+      }
+      sim.setController(id, (atom, cycle) -> segment.cycle());
+      segments.add(segment);
+    }
+    return new CaterpillarCrew(sim, segments, requireNonNull(meta, "meta"));
+  }
+
+  static int atoms(RunSettings settings) {
+    int n = settings.atoms().orElse(DEFAULT_ATOMS);
+    if (n < MIN_ATOMS || n > MAX_ATOMS) {
+      throw new IllegalArgumentException(
+          "--atoms "
+              + n
+              + ": a caterpillar has between "
+              + MIN_ATOMS
+              + " and "
+              + MAX_ATOMS
+              + " atoms");
+    }
+    return n;
+  }
+
+  /** The segments and the head's meta level of one run. */
+  private record CaterpillarCrew(
+      Simulation sim, List<CaterpillarSegment> segments, CaterpillarMeta meta) implements Crew {
+
+    @Override
+    public List<Summary.Entry> figures() {
+      int bonds = 0;
+      for (int id : sim.atomIds()) {
+        if (sim.body(id).read(Atom.binding(CaterpillarModules.FRONT)) instanceof LegBinding.Bound) {
+          bonds++;
+        }
+      }
+      long errors = segments.stream().mapToLong(CaterpillarSegment::errors).sum();
+      return List.of(
+          new Summary.Entry(
+              "stride", String.format(Locale.ROOT, "%.2f rad at the end", meta.stride())),
+          new Summary.Entry("steps judged by the meta level", Integer.toString(meta.steps())),
+          new Summary.Entry("bonds held", bonds + " of " + (sim.atomIds().size() - 1)),
+          new Summary.Entry("module errors", Long.toString(errors)));
+    }
+  }
+}

@@ -1,0 +1,84 @@
+package org.armgals.examples.robots;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.LinkedHashSet;
+import java.util.Set;
+import org.armgals.maam.sim.AtomBody;
+import org.armgals.maam.sim.Simulation;
+import org.armgals.maam.sim.Vec3;
+import org.armgals.maam.spi.ActuatorKey;
+import org.armgals.maam.spi.Body;
+import org.armgals.maam.spi.SensorKey;
+
+/**
+ * A simulated atom's framework body with one more sensor, {@link #POSITION}: where the kernel is on
+ * the ground plane, as an odometer or a beacon would tell a real atom. The simulator's framework
+ * body ({@link Simulation#body}) has no position sensor yet; robots that watch their own progress
+ * read this one. Used on the simulation's thread, like the body it wraps.
+ */
+final class GaitsBody implements Body {
+
+  /** Where the atom is on the ground plane. */
+  static final SensorKey<Place> POSITION = SensorKey.of("position", Place.class);
+
+  /**
+   * A point of the ground plane, metres.
+   *
+   * @param x along the world's x axis
+   * @param y along the world's y axis
+   */
+  record Place(double x, double y) {}
+
+  private final Body body;
+  private final AtomBody atom;
+  private final Set<SensorKey<?>> sensors;
+
+  private GaitsBody(Body body, AtomBody atom) {
+    this.body = body;
+    this.atom = atom;
+    Set<SensorKey<?>> all = new LinkedHashSet<>(body.sensors());
+    all.add(POSITION);
+    this.sensors = Set.copyOf(all);
+  }
+
+  /** The body of {@code sim}'s atom {@code id}, with a position sensor. */
+  static GaitsBody of(Simulation sim, int id) {
+    requireNonNull(sim, "sim");
+    return new GaitsBody(sim.body(id), sim.atom(id));
+  }
+
+  @Override
+  public String id() {
+    return body.id();
+  }
+
+  @Override
+  public Set<SensorKey<?>> sensors() {
+    return sensors;
+  }
+
+  @Override
+  public Set<ActuatorKey<?>> actuators() {
+    return body.actuators();
+  }
+
+  @Override
+  public <T> T read(SensorKey<T> sensor) {
+    if (POSITION.equals(sensor)) {
+      Vec3 p = atom.sensors().position();
+      return sensor.cast(new Place(p.x(), p.y()));
+    }
+    return body.read(sensor);
+  }
+
+  @Override
+  public <T> void command(ActuatorKey<T> actuator, T value) {
+    body.command(actuator, value);
+  }
+
+  @Override
+  public void endCycle() {
+    body.endCycle();
+  }
+}

@@ -1,0 +1,54 @@
+package org.armgals.examples.robots;
+
+import java.util.List;
+import java.util.Locale;
+import org.armgals.examples.cli.Summary;
+import org.armgals.examples.sim.Crew;
+import org.armgals.maam.Schema;
+import org.armgals.maam.sim.Simulation;
+
+/** One run of {@link ObstacleRobot}: the chain's robots and its meta level, if any. */
+final class ObstacleCrew implements Crew {
+  private final Simulation sim;
+  private final List<ObstacleAtom> robots;
+  private final ObstacleMeta meta;
+
+  ObstacleCrew(Simulation sim, List<ObstacleAtom> robots, ObstacleMeta meta) {
+    this.sim = sim;
+    this.robots = List.copyOf(robots);
+    this.meta = meta;
+  }
+
+  /** The robots, rear first. */
+  List<ObstacleAtom> robots() {
+    return robots;
+  }
+
+  /** The meta level. */
+  ObstacleMeta meta() {
+    return meta;
+  }
+
+  /** Where the molecule's centre is along the path now (m): the mean of its kernels. */
+  double centre() {
+    return sim.atomIds().stream()
+        .mapToDouble(id -> sim.atom(id).sensors().position().x())
+        .average()
+        .orElseThrow();
+  }
+
+  @Override
+  public List<Summary.Entry> figures() {
+    double centre = centre();
+    return List.of(
+        new Summary.Entry(
+            "step edge", String.format(Locale.ROOT, "x = %.2f m", ObstacleGait.STEP_FACE)),
+        new Summary.Entry("centre at the end", String.format(Locale.ROOT, "x = %.3f m", centre)),
+        new Summary.Entry("got over the step", Boolean.toString(centre > ObstacleGait.STEP_FACE)),
+        new Summary.Entry("schemas at the end", String.join(", ", schemaNames())));
+  }
+
+  private List<String> schemaNames() {
+    return robots.get(robots.size() - 1).metaRobot().schemas().stream().map(Schema::name).toList();
+  }
+}
