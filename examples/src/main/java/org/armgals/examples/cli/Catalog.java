@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.stream.Collectors;
 import org.armgals.examples.robots.Caterpillar;
+import org.armgals.examples.robots.Distributed;
 import org.armgals.examples.robots.EnergySaver;
 import org.armgals.examples.robots.ObstacleRobot;
 import org.armgals.examples.robots.Walker;
@@ -27,6 +28,7 @@ public final class Catalog {
             new ObstacleRobot(),
             new EnergySaver(),
             EnergySaver.withoutMetaLevel(),
+            new Distributed(),
             new DemoExample()));
   }
 

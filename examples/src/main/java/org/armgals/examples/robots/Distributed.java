@@ -1,0 +1,103 @@
+package org.armgals.examples.robots;
+
+import static java.util.Objects.requireNonNull;
+
+import java.time.Duration;
+import java.util.Locale;
+import org.armgals.examples.cli.RunSettings;
+import org.armgals.examples.sim.Crew;
+import org.armgals.examples.sim.Journal;
+import org.armgals.examples.sim.SimExample;
+import org.armgals.maam.sim.Scene;
+import org.armgals.maam.sim.Scenes;
+import org.armgals.maam.sim.Simulation;
+
+/**
+ * {@code distributed}: a chain of atoms, each run by its own robot in its own JVM, on an island of
+ * its own clock, all talking to the world through one Artemis broker (GALS, paper §5.2: locally
+ * synchronous islands composed asynchronously; and location transparency: the robot is the same
+ * {@code AbstractRobot} whose body happens to be in another process).
+ *
+ * <p>The process of {@code armgals run} holds the world (the simulation) and, unless {@code
+ * --broker} names one, an embedded broker on a free port of 127.0.0.1. Each cycle the world sends
+ * every atom its sensor readings and waits for the leg targets its robot answers; an answer that
+ * does not come in time is a missed cycle. In lock step (the default) the world waits up to ten
+ * seconds, so the run is the same as if the robots ran in the world's own cycle; with {@code
+ * --realtime} it waits one period and goes on with the commands it has. The credentials of an
+ * external broker, if it needs any, come from {@code ARMGALS_BROKER_USER} and {@code
+ * ARMGALS_BROKER_PASSWORD}.
+ */
+public final class Distributed implements SimExample {
+  /** The atoms of a chain, when {@code --atoms} is not given. */
+  static final int DEFAULT_ATOMS = 3;
+
+  static final int MIN_ATOMS = 2;
+  static final int MAX_ATOMS = 6;
+
+  /** Centre to centre along the chain: two kernel radii and two legs, tips touching. */
+  private static final double SPACING = 0.22;
+
+  @Override
+  public String name() {
+    return "distributed";
+  }
+
+  @Override
+  public String summary() {
+    return "a chain whose atoms each run in their own JVM on their own clock, through one broker";
+  }
+
+  @Override
+  public Scene scene(RunSettings settings) {
+    requireNonNull(settings, "settings");
+    int atoms = settings.atoms().orElse(DEFAULT_ATOMS);
+    if (atoms < MIN_ATOMS || atoms > MAX_ATOMS) {
+      throw new IllegalArgumentException(
+          "--atoms "
+              + atoms
+              + ": 'distributed' runs a chain of "
+              + MIN_ATOMS
+              + " to "
+              + MAX_ATOMS
+              + " atoms, one JVM each");
+    }
+    StringBuilder text = new StringBuilder("scene distributed-chain").append(atoms).append('\n');
+    for (int i = 0; i < atoms; i++) {
+      // Rolled 45° about the chain's axis: the atom lies on its -z and -y legs.
+      text.append(
+          String.format(Locale.ROOT, "atom %d %.2f 0 0.085 1 0 0 45%n", i + 1, SPACING * i));
+    }
+    for (int i = 1; i < atoms; i++) {
+      text.append("bond ").append(i).append(":+x ").append(i + 1).append(":-x\n");
+    }
+    return Scenes.parse(text.toString());
+  }
+
+  @Override
+  public Duration defaultDuration() {
+    return Duration.ofSeconds(6);
+  }
+
+  @Override
+  public boolean usesBroker() {
+    return true;
+  }
+
+  @Override
+  public Crew start(Simulation sim, RunSettings settings, Journal journal) {
+    requireNonNull(sim, "sim");
+    requireNonNull(settings, "settings");
+    requireNonNull(journal, "journal");
+    String user = System.getenv(DistributedAtomMain.USER);
+    String password = System.getenv(DistributedAtomMain.PASSWORD);
+    return DistributedCrew.start(
+        sim,
+        settings.broker().map(Object::toString).orElse(null),
+        user == null ? "" : user,
+        password == null ? "" : password,
+        settings.out(),
+        settings.period(),
+        settings.realTime(),
+        journal);
+  }
+}
