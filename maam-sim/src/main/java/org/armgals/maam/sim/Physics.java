@@ -1,6 +1,9 @@
 package org.armgals.maam.sim;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.locks.ReentrantLock;
+import org.jspecify.annotations.Nullable;
 import org.ode4j.math.DMatrix3;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
@@ -10,6 +13,7 @@ import org.ode4j.ode.DContact;
 import org.ode4j.ode.DContactBuffer;
 import org.ode4j.ode.DContactJoint;
 import org.ode4j.ode.DGeom;
+import org.ode4j.ode.DJoint.DJointFeedback;
 import org.ode4j.ode.DJointGroup;
 import org.ode4j.ode.DMisc;
 import org.ode4j.ode.DRotation;
@@ -17,6 +21,7 @@ import org.ode4j.ode.DSpace;
 import org.ode4j.ode.DWorld;
 import org.ode4j.ode.OdeConstants;
 import org.ode4j.ode.OdeHelper;
+import org.ode4j.ode.OdeMath;
 import org.ode4j.ode.internal.ErrorHdl;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -143,6 +148,7 @@ final class Physics {
     } finally {
       ENGINE.unlock();
     }
+    loadLegs();
     contacts.empty();
   }
 
@@ -165,6 +171,10 @@ final class Physics {
       return;
     }
     int n = OdeHelper.collide(o1, o2, MAX_CONTACTS, buffer.getGeomBuffer());
+    LegModel l1 = t1.kind() == GeomTag.Kind.LEG ? t1.leg() : null;
+    LegModel l2 = t2.kind() == GeomTag.Kind.LEG ? t2.leg() : null;
+    boolean kinematic1 = l1 instanceof KinematicLeg;
+    boolean kinematic2 = l2 instanceof KinematicLeg;
     for (int i = 0; i < n; i++) {
       DContact contact = buffer.get(i);
       contact.surface.mode =
@@ -174,10 +184,109 @@ final class Physics {
       contact.surface.mu = friction;
       contact.surface.soft_erp = 0.2;
       contact.surface.soft_cfm = 1e-4;
-      OdeHelper.createContactJoint(world, contacts, contact).attach(b1, b2);
+      if ((l1 != null && l1.movesOnItsCarrier()) || (l2 != null && l2.movesOnItsCarrier())) {
+        surfaceMotion(contact, l1, l2);
+      }
+      DContactJoint joint = OdeHelper.createContactJoint(world, contacts, contact);
+      joint.attach(b1, b2);
+      if (kinematic1 || kinematic2) {
+        Load load = nextLoad();
+        joint.setFeedback(load.feedback);
+        load.set(kinematic1 ? l1 : null, kinematic2 ? l2 : null, contact.geom.pos);
+      }
       touch(t1, contact.geom.pos);
       touch(t2, contact.geom.pos);
     }
+  }
+
+  /**
+   * Gives a contact the velocity of the legs' surfaces relative to their bodies (a kinematic leg
+   * turning on its kernel), so the solver makes the surfaces, not the bodies, stick or slide: the
+   * contact's friction directions are chosen here, and each "motion" is minus the relative surface
+   * velocity along one of them (the engine's sign: body 1 relative to body 2).
+   */
+  private void surfaceMotion(DContact contact, @Nullable LegModel l1, @Nullable LegModel l2) {
+    DVector3C at = contact.geom.pos;
+    DVector3C normal = contact.geom.normal;
+    double ux = 0;
+    double uy = 0;
+    double uz = 0;
+    if (l1 != null) {
+      l1.velocityAt(at, velocity);
+      ux += velocity.get0();
+      uy += velocity.get1();
+      uz += velocity.get2();
+    }
+    if (l2 != null) {
+      l2.velocityAt(at, velocity);
+      ux -= velocity.get0();
+      uy -= velocity.get1();
+      uz -= velocity.get2();
+    }
+    DVector3 t1 = contact.fdir1;
+    OdeMath.dPlaneSpace(normal, t1, t2);
+    // The engine takes its second direction as normal × fdir1.
+    t2.eqCross(normal, t1);
+    contact.surface.mode |=
+        OdeConstants.dContactFDir1
+            | OdeConstants.dContactMotion1
+            | OdeConstants.dContactMotion2
+            | OdeConstants.dContactMotionN;
+    contact.surface.motion1 = -(ux * t1.get0() + uy * t1.get1() + uz * t1.get2());
+    contact.surface.motion2 = -(ux * t2.get0() + uy * t2.get1() + uz * t2.get2());
+    contact.surface.motionN = -(ux * normal.get0() + uy * normal.get1() + uz * normal.get2());
+  }
+
+  private final DVector3 velocity = new DVector3();
+  private final DVector3 t2 = new DVector3();
+
+  /** A contact on a kinematic leg: its force, read after the step, loads the leg. */
+  private static final class Load {
+    final DJointFeedback feedback = new DJointFeedback();
+    final DVector3 at = new DVector3();
+    @Nullable LegModel leg1;
+    @Nullable LegModel leg2;
+
+    void set(@Nullable LegModel leg1, @Nullable LegModel leg2, DVector3C at) {
+      this.leg1 = leg1;
+      this.leg2 = leg2;
+      this.at.set(at);
+    }
+  }
+
+  private final List<Load> loads = new ArrayList<>();
+  private int loadCount;
+
+  private Load nextLoad() {
+    if (loadCount == loads.size()) {
+      loads.add(new Load());
+    }
+    return loads.get(loadCount++);
+  }
+
+  /** Tells kinematic legs the torque their contacts of the last step put on them. */
+  private void loadLegs() {
+    for (int i = 0; i < loadCount; i++) {
+      Load load = loads.get(i);
+      if (load.leg1 != null) {
+        loadLeg(load.leg1, load.at, load.feedback.f1);
+      }
+      if (load.leg2 != null) {
+        loadLeg(load.leg2, load.at, load.feedback.f2);
+      }
+    }
+    loadCount = 0;
+  }
+
+  private static void loadLeg(LegModel leg, DVector3C at, DVector3C f) {
+    DVector3 pivot = leg.pivot();
+    double rx = at.get0() - pivot.get0();
+    double ry = at.get1() - pivot.get1();
+    double rz = at.get2() - pivot.get2();
+    leg.addLoad(
+        ry * f.get2() - rz * f.get1(),
+        rz * f.get0() - rx * f.get2(),
+        rx * f.get1() - ry * f.get0());
   }
 
   /** Marks a leg's tip as touching if the contact is on its far cap. */

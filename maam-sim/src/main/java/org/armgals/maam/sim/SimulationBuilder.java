@@ -24,6 +24,7 @@ public final class SimulationBuilder {
   final Map<Integer, Controller> controllerById = new HashMap<>();
   Pacer pacer = Pacer.asFastAsPossible();
   @Nullable Writer trace;
+  LegDynamics legDynamics = LegDynamics.KINEMATIC;
 
   SimulationBuilder(Scene scene) {
     this.scene = requireNonNull(scene, "scene");
@@ -68,6 +69,15 @@ public final class SimulationBuilder {
   /** The controller of atom {@code id}. */
   public SimulationBuilder controller(int id, Controller controller) {
     controllerById.put(id, requireNonNull(controller, "controller"));
+    return this;
+  }
+
+  /**
+   * How legs move: {@link LegDynamics#KINEMATIC} (the default, fast) or {@link LegDynamics#JOINTED}
+   * (each leg a body on a universal joint).
+   */
+  public SimulationBuilder legDynamics(LegDynamics dynamics) {
+    this.legDynamics = requireNonNull(dynamics, "dynamics");
     return this;
   }
 
