@@ -15,6 +15,7 @@ import org.ode4j.ode.DCapsule;
 import org.ode4j.ode.DMass;
 import org.ode4j.ode.DRay;
 import org.ode4j.ode.DRotation;
+import org.ode4j.ode.DSpace;
 import org.ode4j.ode.DSphere;
 import org.ode4j.ode.DUniversalJoint;
 import org.ode4j.ode.OdeHelper;
@@ -35,6 +36,15 @@ final class AtomModel {
 
   /** The kernel's up axis at the start, in the kernel's frame: what tilt is measured from. */
   private final DVector3 upLocal;
+
+  /** The smallest moment of inertia of the kernel's body (kg·m²). */
+  final double turnInertia;
+
+  /**
+   * The atom rests (the engine does not step its body) and no leg of it moved this step: its
+   * collisions with the world and other still atoms are skipped.
+   */
+  boolean still;
 
   double energy;
   boolean failed;
@@ -60,7 +70,11 @@ final class AtomModel {
     kernel = OdeHelper.createBody(physics.world);
     kernel.setPosition(c.x(), c.y(), c.z());
     kernel.setQuaternion(q);
-    DSphere sphere = OdeHelper.createSphere(physics.space, params.kernelRadius());
+    // The atom's own geometry in a space of its own: the world's space sees one thing per atom,
+    // and an atom's parts are never tested against each other.
+    DSpace parts = OdeHelper.createSimpleSpace(physics.space);
+    parts.setData(new GeomTag(GeomTag.Kind.ATOM, this, null));
+    DSphere sphere = OdeHelper.createSphere(parts, params.kernelRadius());
     sphere.setBody(kernel);
     sphere.setData(new GeomTag(GeomTag.Kind.KERNEL, this, null));
     DMass mass = OdeHelper.createMass();
@@ -69,7 +83,7 @@ final class AtomModel {
     for (Leg leg : Leg.values()) {
       DRay ray = OdeHelper.createRay(physics.space, params.proximityRange());
       ray.disable();
-      DCapsule capsule = OdeHelper.createCapsule(physics.space, params.legRadius(), cylinder);
+      DCapsule capsule = OdeHelper.createCapsule(parts, params.legRadius(), cylinder);
       LegModel model =
           switch (dynamics) {
             case JOINTED -> jointedLeg(physics, leg, q, c, capsule, ray);
@@ -90,6 +104,10 @@ final class AtomModel {
     DVector3 offCentre = new DVector3(mass.getC()).scale(-1);
     mass.translate(offCentre);
     kernel.setMass(mass);
+    turnInertia = Math.min(mass.getI().get00(), Math.min(mass.getI().get11(), mass.getI().get22()));
+    if (dynamics == LegDynamics.KINEMATIC) {
+      Physics.restWhenStill(kernel);
+    }
   }
 
   /** A leg's mass and inertia at its rest pose, in the kernel's frame. */
@@ -131,6 +149,24 @@ final class AtomModel {
     joint.setAxis1(Frames.rotate(q, a1[0], a1[1], a1[2]));
     joint.setAxis2(Frames.rotate(q, a2[0], a2[1], a2[2]));
     return new JointedLeg(this, leg, body, joint, ray);
+  }
+
+  /**
+   * Before the step's collisions: decides whether the atom is {@link #still}; a still atom's tips
+   * keep touching what they touched, a moving atom's are found again.
+   */
+  void beforeCollisions() {
+    still = !kernel.isEnabled();
+    for (LegModel leg : legs.values()) {
+      still &= !leg.movesOnItsCarrier();
+    }
+    for (LegModel leg : legs.values()) {
+      if (still) {
+        leg.contact |= leg.touching;
+      } else {
+        leg.touching = false;
+      }
+    }
   }
 
   LegModel leg(Leg leg) {

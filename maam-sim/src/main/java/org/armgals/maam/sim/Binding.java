@@ -31,6 +31,8 @@ final class Binding {
     this.a = a;
     this.b = b;
     joint = OdeHelper.createFixedJoint(physics.world);
+    a.carrier().enable();
+    b.carrier().enable();
     joint.attach(a.carrier(), b.carrier());
     joint.setFixed();
     joint.setFeedback(feedback);
@@ -75,6 +77,8 @@ final class Binding {
         Frames.rotate(kernelB, tipBLocal.get0(), tipBLocal.get1(), tipBLocal.get2());
     DVector3 positionB = tipAt.add(shift).sub(tipBOffset);
 
+    bodyA.enable();
+    bodyB.enable();
     DVector3 savedPosition = new DVector3(bodyB.getPosition());
     DQuaternion savedTurn = new DQuaternion(bodyB.getQuaternion());
     bodyB.setPosition(positionB);
@@ -122,6 +126,8 @@ final class Binding {
   }
 
   void release() {
+    a.carrier().enable();
+    b.carrier().enable();
     joint.destroy();
     a.binding = null;
     b.binding = null;

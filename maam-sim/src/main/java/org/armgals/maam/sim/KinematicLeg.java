@@ -47,6 +47,7 @@ final class KinematicLeg extends LegModel {
   private final double[] next = new double[2];
   private DQuaternion local = new DQuaternion(1, 0, 0, 0);
   private DVector3 localDirection = new DVector3();
+  private final DVector3 localTip = new DVector3();
   private DVector3 localAxis2 = new DVector3();
 
   KinematicLeg(AtomModel atom, Leg leg, DBody kernel, DCapsule capsule, DRay ray) {
@@ -80,6 +81,10 @@ final class KinematicLeg extends LegModel {
         restDirection[1] * radius + localDirection.get1() * half,
         restDirection[2] * radius + localDirection.get2() * half);
     capsule.setOffsetQuaternion(local);
+    localTip.set(
+        restDirection[0] * radius + localDirection.get0() * length,
+        restDirection[1] * radius + localDirection.get1() * length,
+        restDirection[2] * radius + localDirection.get2() * length);
   }
 
   @Override
@@ -119,10 +124,19 @@ final class KinematicLeg extends LegModel {
       // the body's, so nothing else would turn it back).
       double k1 = inertia * accel1;
       double k2 = inertia * accel2;
-      kernel.addRelTorque(
-          k1 * axis1[0] + k2 * localAxis2.get0(),
-          k1 * axis1[1] + k2 * localAxis2.get1(),
-          k1 * axis1[2] + k2 * localAxis2.get2());
+      double tx = k1 * axis1[0] + k2 * localAxis2.get0();
+      double ty = k1 * axis1[1] + k2 * localAxis2.get1();
+      double tz = k1 * axis1[2] + k2 * localAxis2.get2();
+      if (!kernel.isEnabled()
+          && Math.sqrt(tx * tx + ty * ty + tz * tz) * dt
+              > Physics.REST_ANGULAR * atom.turnInertia) {
+        // A reaction that would turn the resting atom faster than rest allows wakes it; a smaller
+        // one is taken by what it rests on.
+        kernel.enable();
+      }
+      if (kernel.isEnabled()) {
+        kernel.addRelTorque(tx, ty, tz);
+      }
     }
   }
 
@@ -152,6 +166,13 @@ final class KinematicLeg extends LegModel {
 
   @Override
   void afterStep(double dt) {
+    if (!kernel.isEnabled()) {
+      // At rest: the engine did not solve the contacts, and the load is what it was.
+      loadX = 0;
+      loadY = 0;
+      loadZ = 0;
+      return;
+    }
     DVector3 t = new DVector3();
     kernel.vectorFromWorld(loadX, loadY, loadZ, t);
     // Angles grow with negative turns about the axes.
@@ -179,10 +200,7 @@ final class KinematicLeg extends LegModel {
 
   /** The tip in the kernel's frame. */
   DVector3 localTip() {
-    return new DVector3(
-        restDirection[0] * radius + localDirection.get0() * length,
-        restDirection[1] * radius + localDirection.get1() * length,
-        restDirection[2] * radius + localDirection.get2() * length);
+    return new DVector3(localTip);
   }
 
   /** Whether the leg turned in the last step. */
@@ -200,7 +218,7 @@ final class KinematicLeg extends LegModel {
   @Override
   DVector3 tip() {
     DVector3 t = new DVector3();
-    kernel.getRelPointPos(localTip(), t);
+    kernel.getRelPointPos(localTip, t);
     return t;
   }
 

@@ -28,7 +28,13 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
   boolean failed;
   boolean locked;
   @Nullable Binding binding;
+
+  /** The tip touched something during the current control period. */
   boolean contact;
+
+  /** The tip touched something in the last step whose collisions were computed for its atom. */
+  boolean touching;
+
   double proximity;
 
   LegModel(AtomModel atom, Leg leg, DRay ray) {

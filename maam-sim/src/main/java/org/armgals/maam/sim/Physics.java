@@ -45,6 +45,29 @@ final class Physics {
 
   private static final int PIPE_STAVES = 16;
 
+  /**
+   * A body whose speeds, averaged over {@link #REST_SAMPLES} steps, stay below these for {@link
+   * #REST_STEPS} steps is at rest: the engine stops stepping it until something wakes it (a contact
+   * with a moving body, a push, a leg that moves where it touches, a binding).
+   */
+  static final double REST_LINEAR = 0.002;
+
+  /** See {@link #REST_LINEAR} (rad/s). */
+  static final double REST_ANGULAR = 0.02;
+
+  private static final int REST_STEPS = 20;
+  private static final int REST_SAMPLES = 10;
+
+  /** Lets the engine stop stepping {@code body} while it rests (see {@link #REST_LINEAR}). */
+  static void restWhenStill(DBody body) {
+    body.setAutoDisableLinearThreshold(REST_LINEAR);
+    body.setAutoDisableAngularThreshold(REST_ANGULAR);
+    body.setAutoDisableSteps(REST_STEPS);
+    body.setAutoDisableTime(0);
+    body.setAutoDisableAverageSamplesCount(REST_SAMPLES);
+    body.setAutoDisableFlag(true);
+  }
+
   private static final Logger LOG = LoggerFactory.getLogger(Physics.class);
 
   static {
@@ -130,7 +153,7 @@ final class Physics {
     ENGINE.lock();
     raysOnly = true;
     try {
-      space.collide(null, this::near);
+      space.collide(null, nearCallback);
     } finally {
       raysOnly = false;
       ENGINE.unlock();
@@ -142,7 +165,7 @@ final class Physics {
     ENGINE.lock();
     try {
       DMisc.dRandSetSeed(seed);
-      space.collide(null, this::near);
+      space.collide(null, nearCallback);
       world.quickStep(dt);
       seed = DMisc.dRandGetSeed();
     } finally {
@@ -152,9 +175,27 @@ final class Physics {
     contacts.empty();
   }
 
+  private final DGeom.DNearCallback nearCallback = this::near;
+
   private void near(Object data, DGeom o1, DGeom o2) {
     GeomTag t1 = (GeomTag) o1.getData();
     GeomTag t2 = (GeomTag) o2.getData();
+    if (t1.kind() == GeomTag.Kind.ATOM || t2.kind() == GeomTag.Kind.ATOM) {
+      // An atom's space near something else: look inside, unless only rays are cast and neither is
+      // a ray.
+      if (raysOnly && t1.kind() != GeomTag.Kind.RAY && t2.kind() != GeomTag.Kind.RAY) {
+        return;
+      }
+      if (!raysOnly && still(t1) && still(t2)) {
+        // Nothing moves: the contacts would be those of the last step, which the solver ignores
+        // between resting bodies; the tips keep the contact state they had.
+        return;
+      }
+      if (t1.atom() != t2.atom()) {
+        OdeHelper.spaceCollide2(o1, o2, data, nearCallback);
+      }
+      return;
+    }
     if (t1.kind() == GeomTag.Kind.RAY || t2.kind() == GeomTag.Kind.RAY) {
       ray(t1, o1, t2, o2);
       return;
@@ -184,8 +225,17 @@ final class Physics {
       contact.surface.mu = friction;
       contact.surface.soft_erp = 0.2;
       contact.surface.soft_cfm = 1e-4;
-      if ((l1 != null && l1.movesOnItsCarrier()) || (l2 != null && l2.movesOnItsCarrier())) {
+      boolean moving1 = l1 != null && l1.movesOnItsCarrier();
+      boolean moving2 = l2 != null && l2.movesOnItsCarrier();
+      if (moving1 || moving2) {
         surfaceMotion(contact, l1, l2);
+        // A leg that moves where it touches something wakes its atom.
+        if (moving1 && b1 != null) {
+          b1.enable();
+        }
+        if (moving2 && b2 != null) {
+          b2.enable();
+        }
       }
       DContactJoint joint = OdeHelper.createContactJoint(world, contacts, contact);
       joint.attach(b1, b2);
@@ -248,6 +298,11 @@ final class Physics {
     @Nullable LegModel leg2;
 
     void set(@Nullable LegModel leg1, @Nullable LegModel leg2, DVector3C at) {
+      // The engine leaves the feedback of a contact between resting bodies as it was.
+      feedback.f1.setZero();
+      feedback.f2.setZero();
+      feedback.t1.setZero();
+      feedback.t2.setZero();
       this.leg1 = leg1;
       this.leg2 = leg2;
       this.at.set(at);
@@ -289,15 +344,22 @@ final class Physics {
         rx * f.get1() - ry * f.get0());
   }
 
+  /** A resting atom or the world, for collisions. */
+  private static boolean still(GeomTag tag) {
+    AtomModel atom = tag.atom();
+    return tag.kind() == GeomTag.Kind.WORLD || (atom != null && atom.still);
+  }
+
   /** Marks a leg's tip as touching if the contact is on its far cap. */
   private void touch(GeomTag tag, DVector3C at) {
     LegModel leg = tag.leg();
-    if (tag.kind() != GeomTag.Kind.LEG || leg == null || leg.contact) {
+    if (tag.kind() != GeomTag.Kind.LEG || leg == null || leg.touching) {
       return;
     }
     DVector3 tip = leg.tip();
     if (tip.distance(at) <= 1.5 * legRadius) {
       leg.contact = true;
+      leg.touching = true;
     }
   }
 

@@ -172,6 +172,7 @@ final class SimulationImpl implements Simulation {
   private void physicsStep() {
     for (AtomModel atom : atoms) {
       if (atom.pushX != 0 || atom.pushY != 0 || atom.pushZ != 0) {
+        atom.kernel.enable();
         atom.kernel.addForce(atom.pushX, atom.pushY, atom.pushZ);
       }
       boolean on = atom.motorsOn();
@@ -181,6 +182,9 @@ final class SimulationImpl implements Simulation {
     }
     for (Binding binding : bindings) {
       binding.follow();
+    }
+    for (AtomModel atom : atoms) {
+      atom.beforeCollisions();
     }
     physics.step(dt);
     for (Binding binding : bindings) {
