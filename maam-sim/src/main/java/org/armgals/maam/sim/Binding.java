@@ -98,27 +98,51 @@ final class Binding {
 
   /**
    * After a physics step: tells bound kinematic legs the torque the binding put on them about their
-   * pivots (the joint's wrench on each kernel is carried through its leg).
+   * pivots (the joint's wrench on each kernel is carried through its leg). The engine's quick-step
+   * (ode4j 0.5.3) leaves the wrench on the first body, about its centre, in {@code f2} and {@code
+   * t2}; the second body takes the opposite force and the torque that balances both about its own
+   * centre.
    */
   void loadLegs() {
+    DVector3C f = feedback.f2;
+    DVector3C t = feedback.t2;
+    DVector3C comA = a.carrier().getPosition();
+    DVector3C comB = b.carrier().getPosition();
     if (a instanceof KinematicLeg) {
-      load(a, feedback.f1, feedback.t1);
+      load(a, comA, f.get0(), f.get1(), f.get2(), t.get0(), t.get1(), t.get2());
     }
     if (b instanceof KinematicLeg) {
-      load(b, feedback.f2, feedback.t2);
+      // t_B = -t_A - (comA - comB) × f_A
+      double rx = comA.get0() - comB.get0();
+      double ry = comA.get1() - comB.get1();
+      double rz = comA.get2() - comB.get2();
+      load(
+          b,
+          comB,
+          -f.get0(),
+          -f.get1(),
+          -f.get2(),
+          -t.get0() - (ry * f.get2() - rz * f.get1()),
+          -t.get1() - (rz * f.get0() - rx * f.get2()),
+          -t.get2() - (rx * f.get1() - ry * f.get0()));
     }
   }
 
-  private static void load(LegModel leg, DVector3C f, DVector3C t) {
-    DVector3C com = leg.carrier().getPosition();
+  /** Loads {@code leg} with the wrench (f, t) on its kernel, t about {@code com}. */
+  private static void load(
+      LegModel leg,
+      DVector3C com,
+      double fx,
+      double fy,
+      double fz,
+      double tx,
+      double ty,
+      double tz) {
     DVector3 pivot = leg.pivot();
     double rx = com.get0() - pivot.get0();
     double ry = com.get1() - pivot.get1();
     double rz = com.get2() - pivot.get2();
-    leg.addLoad(
-        t.get0() + ry * f.get2() - rz * f.get1(),
-        t.get1() + rz * f.get0() - rx * f.get2(),
-        t.get2() + rx * f.get1() - ry * f.get0());
+    leg.addLoad(tx + ry * fz - rz * fy, ty + rz * fx - rx * fz, tz + rx * fy - ry * fx);
   }
 
   LegModel other(LegModel leg) {

@@ -208,6 +208,12 @@ final class Physics {
     }
     DBody b1 = o1.getBody();
     DBody b2 = o2.getBody();
+    if (b1 == null && b2 != null) {
+      // The engine would swap the bodies of such a contact and turn its normal, but not its first
+      // friction direction: the surface motion below is computed for body 1 being o1's.
+      near(data, o2, o1);
+      return;
+    }
     if (b1 != null && b2 != null && OdeHelper.areConnectedExcluding(b1, b2, DContactJoint.class)) {
       return;
     }
@@ -319,29 +325,33 @@ final class Physics {
     return loads.get(loadCount++);
   }
 
-  /** Tells kinematic legs the torque their contacts of the last step put on them. */
+  /**
+   * Tells kinematic legs the torque their contacts of the last step put on them. The engine's
+   * quick-step (ode4j 0.5.3) leaves the force on the joint's first body in {@code f2} and does not
+   * fill {@code f1}; a contact pushes its second body with the opposite force.
+   */
   private void loadLegs() {
     for (int i = 0; i < loadCount; i++) {
       Load load = loads.get(i);
       if (load.leg1 != null) {
-        loadLeg(load.leg1, load.at, load.feedback.f1);
+        loadLeg(load.leg1, load.at, load.feedback.f2, 1);
       }
       if (load.leg2 != null) {
-        loadLeg(load.leg2, load.at, load.feedback.f2);
+        loadLeg(load.leg2, load.at, load.feedback.f2, -1);
       }
     }
     loadCount = 0;
   }
 
-  private static void loadLeg(LegModel leg, DVector3C at, DVector3C f) {
+  private static void loadLeg(LegModel leg, DVector3C at, DVector3C f, double sign) {
     DVector3 pivot = leg.pivot();
     double rx = at.get0() - pivot.get0();
     double ry = at.get1() - pivot.get1();
     double rz = at.get2() - pivot.get2();
     leg.addLoad(
-        ry * f.get2() - rz * f.get1(),
-        rz * f.get0() - rx * f.get2(),
-        rx * f.get1() - ry * f.get0());
+        sign * (ry * f.get2() - rz * f.get1()),
+        sign * (rz * f.get0() - rx * f.get2()),
+        sign * (rx * f.get1() - ry * f.get0()));
   }
 
   /** A resting atom or the world, for collisions. */
