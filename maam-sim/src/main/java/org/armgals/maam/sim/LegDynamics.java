@@ -7,17 +7,17 @@ package org.armgals.maam.sim;
  */
 public enum LegDynamics {
   /**
-   * The default: an atom is one rigid body (kernel and legs, its mass and inertia those of the rest
-   * pose); each leg is a capsule of that body whose pose follows its servo within the speed limit,
-   * yields when its load exceeds the torque limit, and pushes on what it touches through the
-   * contacts' surface velocity. A binding fixes two kernels at the pose their bound legs set. About
-   * an order of magnitude faster than {@link #JOINTED}.
+   * An atom is one rigid body (kernel and legs, its mass and inertia those of the rest pose); each
+   * leg is a capsule of that body whose pose follows its servo within the speed limit, yields when
+   * its load exceeds the torque limit, and pushes on what it touches through the contacts' surface
+   * velocity. A binding fixes two kernels at the pose their bound legs set. About an order of
+   * magnitude faster than {@link #JOINTED}.
    */
   KINEMATIC,
   /**
-   * Each leg a body of its own on a motorized universal joint (seven bodies and six joints per
-   * atom), a binding a fixed joint between two legs: the legs' own inertia and the joints'
-   * compliance are simulated, at about ten times the cost.
+   * The default: each leg a body of its own on a motorized universal joint (seven bodies and six
+   * joints per atom), a binding a fixed joint between two legs: the legs' own inertia and the
+   * joints' compliance are simulated, at about ten times the cost.
    */
   JOINTED
 }

@@ -24,7 +24,7 @@ public final class SimulationBuilder {
   final Map<Integer, Controller> controllerById = new HashMap<>();
   Pacer pacer = Pacer.asFastAsPossible();
   @Nullable Writer trace;
-  LegDynamics legDynamics = LegDynamics.KINEMATIC;
+  LegDynamics legDynamics = LegDynamics.JOINTED;
 
   SimulationBuilder(Scene scene) {
     this.scene = requireNonNull(scene, "scene");
