@@ -4,6 +4,7 @@ import java.io.PrintStream;
 import java.time.Duration;
 import org.armgals.active.TimeSource;
 import org.armgals.maam.sim.AtomBody;
+import org.armgals.maam.sim.LegDynamics;
 import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;
 import org.armgals.maam.sim.spi.Controller;
@@ -12,9 +13,10 @@ import org.armgals.maam.spi.Leg;
 /**
  * Measures the real-time factor of maam-sim: {@code n} atoms in tripod pose on a grid, each run by
  * a simple controller that reads its sensors and swings its three upper legs, at a fixed physics
- * step and a 10 ms control period. Prints {@code sim name=rtf atoms=<n> step_ms=<s> rtf=<x>}.
+ * step and a 10 ms control period, with kinematic (default) or jointed legs. Prints {@code sim
+ * name=rtf atoms=<n> step_ms=<s> rtf=<x> legs=<kinematic|jointed>}.
  *
- * <p>Usage: {@code SimRtf [--step-ms s] [--warmup-seconds w] [--seconds m] n...}
+ * <p>Usage: {@code SimRtf [--step-ms s] [--warmup-seconds w] [--seconds m] [--legs l] n...}
  */
 public final class SimRtf {
 
@@ -31,12 +33,14 @@ public final class SimRtf {
     double stepMs = 1;
     double warmup = 2;
     double seconds = 3;
+    LegDynamics legs = LegDynamics.KINEMATIC;
     java.util.List<Integer> sizes = new java.util.ArrayList<>();
     for (int i = 0; i < args.length; i++) {
       switch (args[i]) {
         case "--step-ms" -> stepMs = Double.parseDouble(args[++i]);
         case "--warmup-seconds" -> warmup = Double.parseDouble(args[++i]);
         case "--seconds" -> seconds = Double.parseDouble(args[++i]);
+        case "--legs" -> legs = legs(args[++i]);
         default -> sizes.add(Integer.parseInt(args[i]));
       }
     }
@@ -45,15 +49,25 @@ public final class SimRtf {
     }
     SimRtf bench = new SimRtf(TimeSource.system(), System.out);
     for (int n : sizes) {
-      bench.run(n, stepMs, warmup, seconds);
+      bench.run(n, stepMs, warmup, seconds, legs);
     }
   }
 
-  void run(int atoms, double stepMs, double warmupSeconds, double seconds) {
+  private static LegDynamics legs(String name) {
+    for (LegDynamics d : LegDynamics.values()) {
+      if (d.name().equalsIgnoreCase(name)) {
+        return d;
+      }
+    }
+    throw new IllegalArgumentException("--legs '" + name + "': expected kinematic or jointed");
+  }
+
+  void run(int atoms, double stepMs, double warmupSeconds, double seconds, LegDynamics legs) {
     Duration step = Duration.ofNanos(Math.round(stepMs * 1e6));
     Duration period = step.multipliedBy(Math.max(1, Math.round(10 / stepMs)));
     try (Simulation sim =
         Simulation.builder(Scenes.grid(atoms, 0.4))
+            .legDynamics(legs)
             .physicsStep(step)
             .controlPeriod(period)
             .controllers(SimRtf::swing)
@@ -63,7 +77,9 @@ public final class SimRtf {
       long realStart = time.nanoTime();
       runFor(sim, seconds);
       double rtf = (sim.timeNanos() - virtualStart) / (double) (time.nanoTime() - realStart);
-      out.printf("sim name=rtf atoms=%d step_ms=%s rtf=%.3f%n", atoms, stepMs, rtf);
+      out.printf(
+          "sim name=rtf atoms=%d step_ms=%s rtf=%.3f legs=%s%n",
+          atoms, stepMs, rtf, legs.name().toLowerCase(java.util.Locale.ROOT));
     }
   }
 

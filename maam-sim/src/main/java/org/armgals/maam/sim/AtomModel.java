@@ -5,6 +5,7 @@ import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
 import org.armgals.maam.spi.Leg;
+import org.ode4j.math.DMatrix3;
 import org.ode4j.math.DQuaternion;
 import org.ode4j.math.DQuaternionC;
 import org.ode4j.math.DVector3;
@@ -13,11 +14,17 @@ import org.ode4j.ode.DBody;
 import org.ode4j.ode.DCapsule;
 import org.ode4j.ode.DMass;
 import org.ode4j.ode.DRay;
+import org.ode4j.ode.DRotation;
+import org.ode4j.ode.DSpace;
 import org.ode4j.ode.DSphere;
 import org.ode4j.ode.DUniversalJoint;
 import org.ode4j.ode.OdeHelper;
 
-/** One atom's physics and state: kernel, six legs, battery, failure, inbox, pending push. */
+/**
+ * One atom's physics and state: kernel, six legs, battery, failure, inbox, pending push. With
+ * {@link LegDynamics#KINEMATIC} legs the kernel's body carries the whole atom's mass (the legs' at
+ * their rest pose); with {@link LegDynamics#JOINTED} legs it carries the kernel's alone.
+ */
 final class AtomModel {
 
   final int id;
@@ -30,6 +37,15 @@ final class AtomModel {
   /** The kernel's up axis at the start, in the kernel's frame: what tilt is measured from. */
   private final DVector3 upLocal;
 
+  /** The smallest moment of inertia of the kernel's body (kg·m²). */
+  final double turnInertia;
+
+  /**
+   * The atom rests (the engine does not step its body) and no leg of it moved this step: its
+   * collisions with the world and other still atoms are skipped.
+   */
+  boolean still;
+
   double energy;
   boolean failed;
   boolean emptyReported;
@@ -41,7 +57,7 @@ final class AtomModel {
   double pushY;
   double pushZ;
 
-  AtomModel(Physics physics, Scene.Placement placement, AtomParams params) {
+  AtomModel(Physics physics, Scene.Placement placement, AtomParams params, LegDynamics dynamics) {
     this.id = placement.id();
     this.params = params;
     this.cone = new Cone(params.coneHalfAngle());
@@ -52,48 +68,104 @@ final class AtomModel {
     upLocal = Frames.rotate(inverse, 0, 0, 1);
 
     kernel = OdeHelper.createBody(physics.world);
-    DMass mass = OdeHelper.createMass();
-    mass.setSphereTotal(params.kernelMass(), params.kernelRadius());
-    kernel.setMass(mass);
     kernel.setPosition(c.x(), c.y(), c.z());
     kernel.setQuaternion(q);
-    DSphere sphere = OdeHelper.createSphere(physics.space, params.kernelRadius());
+    // The atom's own geometry in a space of its own: the world's space sees one thing per atom,
+    // and an atom's parts are never tested against each other.
+    DSpace parts = OdeHelper.createSimpleSpace(physics.space);
+    parts.setData(new GeomTag(GeomTag.Kind.ATOM, this, null));
+    DSphere sphere = OdeHelper.createSphere(parts, params.kernelRadius());
     sphere.setBody(kernel);
     sphere.setData(new GeomTag(GeomTag.Kind.KERNEL, this, null));
-
-    double r = params.kernelRadius();
-    double half = params.legLength() / 2;
+    DMass mass = OdeHelper.createMass();
+    mass.setSphereTotal(params.kernelMass(), params.kernelRadius());
     double cylinder = params.legLength() - 2 * params.legRadius();
     for (Leg leg : Leg.values()) {
-      DVector3 d = Frames.rotate(q, leg.x(), leg.y(), leg.z());
-      DBody body = OdeHelper.createBody(physics.world);
-      DMass legMass = OdeHelper.createMass();
-      legMass.setCapsuleTotal(params.legMass(), 3, params.legRadius(), cylinder);
-      body.setMass(legMass);
-      body.setPosition(
-          c.x() + d.get0() * (r + half),
-          c.y() + d.get1() * (r + half),
-          c.z() + d.get2() * (r + half));
-      body.setQuaternion(Frames.multiply(q, Frames.zOnto(leg)));
-      DCapsule capsule = OdeHelper.createCapsule(physics.space, params.legRadius(), cylinder);
-      capsule.setBody(body);
-
-      DUniversalJoint joint = OdeHelper.createUniversalJoint(physics.world);
-      joint.attach(kernel, body);
-      joint.setAnchor(c.x() + d.get0() * r, c.y() + d.get1() * r, c.z() + d.get2() * r);
-      double[] a1 = Frames.axis1(leg);
-      double[] a2 = Frames.axis2(leg);
-      joint.setAxis1(Frames.rotate(q, a1[0], a1[1], a1[2]));
-      joint.setAxis2(Frames.rotate(q, a2[0], a2[1], a2[2]));
-
       DRay ray = OdeHelper.createRay(physics.space, params.proximityRange());
       ray.disable();
-      LegModel model = new LegModel(this, leg, body, joint, ray);
+      DCapsule capsule = OdeHelper.createCapsule(parts, params.legRadius(), cylinder);
+      LegModel model =
+          switch (dynamics) {
+            case JOINTED -> jointedLeg(physics, leg, q, c, capsule, ray);
+            case KINEMATIC -> {
+              capsule.setBody(kernel);
+              mass.add(restLegMass(leg));
+              yield new KinematicLeg(this, leg, kernel, capsule, ray);
+            }
+          };
       model.locked = params.autoLock();
       model.proximity = params.proximityRange();
       capsule.setData(new GeomTag(GeomTag.Kind.LEG, this, model));
       ray.setData(new GeomTag(GeomTag.Kind.RAY, this, model));
       legs.put(leg, model);
+    }
+    // The legs sit symmetrically, so the centre of mass is the kernel's centre up to rounding; the
+    // engine wants it exactly there.
+    DVector3 offCentre = new DVector3(mass.getC()).scale(-1);
+    mass.translate(offCentre);
+    kernel.setMass(mass);
+    turnInertia = Math.min(mass.getI().get00(), Math.min(mass.getI().get11(), mass.getI().get22()));
+    if (dynamics == LegDynamics.KINEMATIC) {
+      Physics.restWhenStill(kernel);
+    }
+  }
+
+  /** A leg's mass and inertia at its rest pose, in the kernel's frame. */
+  private DMass restLegMass(Leg leg) {
+    double cylinder = params.legLength() - 2 * params.legRadius();
+    DMass legMass = OdeHelper.createMass();
+    legMass.setCapsuleTotal(params.legMass(), 3, params.legRadius(), cylinder);
+    DMatrix3 r = new DMatrix3();
+    DRotation.dRfromQ(r, Frames.zOnto(leg));
+    legMass.rotate(r);
+    double d = params.kernelRadius() + params.legLength() / 2;
+    legMass.translate(leg.x() * d, leg.y() * d, leg.z() * d);
+    return legMass;
+  }
+
+  /** A leg body on a universal joint at the kernel's surface, its capsule on it. */
+  private JointedLeg jointedLeg(
+      Physics physics, Leg leg, DQuaternion q, Vec3 c, DCapsule capsule, DRay ray) {
+    double r = params.kernelRadius();
+    double half = params.legLength() / 2;
+    double cylinder = params.legLength() - 2 * params.legRadius();
+    DVector3 d = Frames.rotate(q, leg.x(), leg.y(), leg.z());
+    DBody body = OdeHelper.createBody(physics.world);
+    DMass legMass = OdeHelper.createMass();
+    legMass.setCapsuleTotal(params.legMass(), 3, params.legRadius(), cylinder);
+    body.setMass(legMass);
+    body.setPosition(
+        c.x() + d.get0() * (r + half),
+        c.y() + d.get1() * (r + half),
+        c.z() + d.get2() * (r + half));
+    body.setQuaternion(Frames.multiply(q, Frames.zOnto(leg)));
+    capsule.setBody(body);
+
+    DUniversalJoint joint = OdeHelper.createUniversalJoint(physics.world);
+    joint.attach(kernel, body);
+    joint.setAnchor(c.x() + d.get0() * r, c.y() + d.get1() * r, c.z() + d.get2() * r);
+    double[] a1 = Frames.axis1(leg);
+    double[] a2 = Frames.axis2(leg);
+    joint.setAxis1(Frames.rotate(q, a1[0], a1[1], a1[2]));
+    joint.setAxis2(Frames.rotate(q, a2[0], a2[1], a2[2]));
+    return new JointedLeg(this, leg, body, joint, ray);
+  }
+
+  /**
+   * Before the step's collisions: decides whether the atom is {@link #still}; a still atom's tips
+   * keep touching what they touched, a moving atom's are found again.
+   */
+  void beforeCollisions() {
+    still = !kernel.isEnabled();
+    for (LegModel leg : legs.values()) {
+      still &= !leg.movesOnItsCarrier();
+    }
+    for (LegModel leg : legs.values()) {
+      if (still) {
+        leg.contact |= leg.touching;
+      } else {
+        leg.touching = false;
+      }
     }
   }
 
@@ -129,7 +201,7 @@ final class AtomModel {
    */
   boolean drain(double dt) {
     for (LegModel leg : legs.values()) {
-      leg.readTorques();
+      leg.afterStep(dt);
     }
     if (failed || energy <= 0) {
       return false;

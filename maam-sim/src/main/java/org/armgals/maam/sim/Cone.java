@@ -32,6 +32,10 @@ final class Cone {
     return Math.acos(Math.min(1, cosHalf / c));
   }
 
+  private boolean inside(double a1, double a2) {
+    return Math.cos(a1) * Math.cos(a2) >= cosHalf;
+  }
+
   /**
    * {@code (a1, a2)} scaled down onto the cone's edge if it is outside, written to {@code out} (the
    * direction of the tilt is kept; {@code out} may be the input's array).
@@ -39,7 +43,8 @@ final class Cone {
   void clamp(double a1, double a2, double[] out) {
     a1 = Math.max(-halfAngle, Math.min(halfAngle, a1));
     a2 = Math.max(-halfAngle, Math.min(halfAngle, a2));
-    if (tilt(a1, a2) <= halfAngle) {
+    // tilt <= halfAngle exactly when cos a1 · cos a2 >= cos halfAngle (no acos on the way).
+    if (inside(a1, a2)) {
       out[0] = a1;
       out[1] = a2;
       return;
@@ -48,7 +53,7 @@ final class Cone {
     double hi = 1;
     for (int i = 0; i < 40; i++) {
       double mid = (lo + hi) / 2;
-      if (tilt(a1 * mid, a2 * mid) <= halfAngle) {
+      if (inside(a1 * mid, a2 * mid)) {
         lo = mid;
       } else {
         hi = mid;

@@ -77,4 +77,15 @@ final class Frames {
       case PZ, MZ -> new double[] {0, 1, 0};
     };
   }
+
+  /** The rotation by {@code angle} rad about the unit axis {@code a}. */
+  static DQuaternion about(double[] a, double angle) {
+    double s = Math.sin(angle / 2);
+    return new DQuaternion(Math.cos(angle / 2), a[0] * s, a[1] * s, a[2] * s);
+  }
+
+  /** The inverse of the unit quaternion {@code q}. */
+  static DQuaternion conjugate(DQuaternionC q) {
+    return new DQuaternion(q.get0(), -q.get1(), -q.get2(), -q.get3());
+  }
 }

@@ -2,11 +2,15 @@ package org.armgals.maam.sim;
 
 import org.jspecify.annotations.Nullable;
 
-/** What a collision geometry belongs to: an atom's kernel, leg or proximity ray, or the world. */
+/**
+ * What a collision geometry belongs to: an atom (the space of its parts), its kernel, leg or
+ * proximity ray, or the world.
+ */
 record GeomTag(Kind kind, @Nullable AtomModel atom, @Nullable LegModel leg) {
 
   enum Kind {
     WORLD,
+    ATOM,
     KERNEL,
     LEG,
     RAY

@@ -5,126 +5,98 @@ import org.jspecify.annotations.Nullable;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
 import org.ode4j.ode.DBody;
-import org.ode4j.ode.DJoint;
-import org.ode4j.ode.DJoint.DJointFeedback;
 import org.ode4j.ode.DRay;
-import org.ode4j.ode.DUniversalJoint;
 
-/** One leg: its body, its two-axis joint and servo, its connector and its proximity ray. */
-final class LegModel {
+/**
+ * One leg: what every leg model shares (its commanded target, torque limit, connector, sensors and
+ * proximity ray); how the leg moves is the subclass's: {@link JointedLeg} (a body on a motorized
+ * universal joint) or {@link KinematicLeg} (geometry of the kernel's body, driven by its servo).
+ */
+abstract sealed class LegModel permits JointedLeg, KinematicLeg {
 
   final AtomModel atom;
   final Leg leg;
-  final DBody body;
-  final DUniversalJoint joint;
   final DRay ray;
-  private final DJointFeedback feedback = new DJointFeedback();
-  private final DVector3 anchor = new DVector3();
-  private final DVector3 axis = new DVector3();
+
+  /** The torques the motors applied to the leg about its two axes in the last step (N·m). */
   double torque1;
+
   double torque2;
-  private double rate1;
-  private double rate2;
-  private final double[] target = new double[2];
+  final double[] target = new double[2];
   boolean powered = true;
   double torqueLimit;
   boolean failed;
   boolean locked;
   @Nullable Binding binding;
+
+  /** The tip touched something during the current control period. */
   boolean contact;
+
+  /** The tip touched something in the last step whose collisions were computed for its atom. */
+  boolean touching;
+
   double proximity;
 
-  LegModel(AtomModel atom, Leg leg, DBody body, DUniversalJoint joint, DRay ray) {
+  LegModel(AtomModel atom, Leg leg, DRay ray) {
     this.atom = atom;
     this.leg = leg;
-    this.body = body;
-    this.joint = joint;
     this.ray = ray;
-    joint.setFeedback(feedback);
     this.torqueLimit = atom.params.maxTorque();
   }
 
-  void setTarget(double a1, double a2) {
+  final void setTarget(double a1, double a2) {
     atom.cone.clamp(a1, a2, target);
     powered = true;
   }
 
-  /**
-   * One physics step of the servo: the stops of each axis follow the other axis's angle so the leg
-   * stays in its cone, and each motor is asked for the speed that closes its error (within the
-   * speed limit), which the solver reaches with no more than the torque limit.
-   */
-  void servo(boolean motorsOn) {
-    double a1 = joint.getAngle1();
-    double a2 = joint.getAngle2();
-    double s1 = atom.cone.stopGiven(a2);
-    double s2 = atom.cone.stopGiven(a1);
-    joint.setParam(DJoint.PARAM_N.dParamLoStop1, -s1);
-    joint.setParam(DJoint.PARAM_N.dParamHiStop1, s1);
-    joint.setParam(DJoint.PARAM_N.dParamLoStop2, -s2);
-    joint.setParam(DJoint.PARAM_N.dParamHiStop2, s2);
-    AtomParams p = atom.params;
-    boolean on = motorsOn && powered && !failed;
-    double fmax = on ? torqueLimit : 0;
-    joint.setParam(DJoint.PARAM_N.dParamFMax1, fmax);
-    joint.setParam(DJoint.PARAM_N.dParamFMax2, fmax);
-    joint.setParam(DJoint.PARAM_N.dParamVel1, on ? speed(target[0] - a1, p) : 0);
-    joint.setParam(DJoint.PARAM_N.dParamVel2, on ? speed(target[1] - a2, p) : 0);
-  }
+  /** The joint's first angle (rad). */
+  abstract double angle1();
 
-  private static double speed(double error, AtomParams p) {
-    return Math.max(-p.maxSpeed(), Math.min(p.maxSpeed(), p.servoGain() * error));
-  }
+  /** The joint's second angle (rad). */
+  abstract double angle2();
 
-  /**
-   * Reads the torques the joint applied to the leg about its two axes in the last step, about the
-   * joint's anchor (so the reaction that holds the leg's weight is not counted as motor torque),
-   * and the two angle rates.
-   */
-  void readTorques() {
-    DVector3 anchor = this.anchor;
-    joint.getAnchor2(anchor);
-    DVector3C com = body.getPosition();
-    // torque about com = tau_joint + (anchor - com) x f  =>  tau_joint = t - (anchor - com) x f
-    double rx = anchor.get0() - com.get0();
-    double ry = anchor.get1() - com.get1();
-    double rz = anchor.get2() - com.get2();
-    DVector3 f = feedback.f2;
-    DVector3 t = feedback.t2;
-    double jx = t.get0() - (ry * f.get2() - rz * f.get1());
-    double jy = t.get1() - (rz * f.get0() - rx * f.get2());
-    double jz = t.get2() - (rx * f.get1() - ry * f.get0());
-    joint.getAxis1(axis);
-    torque1 = jx * axis.get0() + jy * axis.get1() + jz * axis.get2();
-    joint.getAxis2(axis);
-    torque2 = jx * axis.get0() + jy * axis.get1() + jz * axis.get2();
-    rate1 = joint.getAngle1Rate();
-    rate2 = joint.getAngle2Rate();
-  }
+  /** One physics step of the servo, before the engine steps the world by {@code dt} seconds. */
+  abstract void servo(boolean motorsOn, double dt);
+
+  /** After the engine's step: reads the motors' torques and the angle rates of the step. */
+  abstract void afterStep(double dt);
 
   /** Mechanical power of the two motors in the last step (W): |τ1·ω1| + |τ2·ω2|. */
-  double motorPower() {
-    return Math.abs(torque1 * rate1) + Math.abs(torque2 * rate2);
-  }
+  abstract double motorPower();
+
+  /** The body a binding at this tip is fixed to. */
+  abstract DBody carrier();
 
   /** The leg's unit direction in the world. */
-  DVector3 direction() {
-    DVector3 d = new DVector3();
-    body.vectorToWorld(0, 0, 1, d);
-    return d;
-  }
+  abstract DVector3 direction();
 
   /** The tip's position: the end of the leg's far cap. */
-  DVector3 tip() {
-    DVector3 d = direction();
-    DVector3C c = body.getPosition();
-    double half = atom.params.legLength() / 2;
-    return new DVector3(
-        c.get0() + d.get0() * half, c.get1() + d.get1() * half, c.get2() + d.get2() * half);
+  abstract DVector3 tip();
+
+  /**
+   * Whether the leg's surface moves relative to its {@link #carrier()} (then contacts on it take
+   * {@link #velocityAt} as their surface velocity).
+   */
+  boolean movesOnItsCarrier() {
+    return false;
   }
 
+  /** The velocity of the leg's surface at {@code p} relative to its carrier, into {@code out}. */
+  void velocityAt(DVector3C p, DVector3 out) {
+    out.setZero();
+  }
+
+  /**
+   * Adds the torque {@code (tx, ty, tz)} (world frame, N·m about the leg's pivot) that the world
+   * applied to the leg in the last step through a contact or a binding.
+   */
+  void addLoad(double tx, double ty, double tz) {}
+
+  /** The leg's pivot on the kernel's surface, in the world. */
+  abstract DVector3 pivot();
+
   /** Places the proximity ray at the tip, pointing along the leg. */
-  void aimRay() {
+  final void aimRay() {
     DVector3 d = direction();
     DVector3 tip = tip();
     ray.set(tip, d);

@@ -1,6 +1,9 @@
 package org.armgals.maam.sim;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.locks.ReentrantLock;
+import org.jspecify.annotations.Nullable;
 import org.ode4j.math.DMatrix3;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
@@ -10,6 +13,7 @@ import org.ode4j.ode.DContact;
 import org.ode4j.ode.DContactBuffer;
 import org.ode4j.ode.DContactJoint;
 import org.ode4j.ode.DGeom;
+import org.ode4j.ode.DJoint.DJointFeedback;
 import org.ode4j.ode.DJointGroup;
 import org.ode4j.ode.DMisc;
 import org.ode4j.ode.DRotation;
@@ -17,6 +21,7 @@ import org.ode4j.ode.DSpace;
 import org.ode4j.ode.DWorld;
 import org.ode4j.ode.OdeConstants;
 import org.ode4j.ode.OdeHelper;
+import org.ode4j.ode.OdeMath;
 import org.ode4j.ode.internal.ErrorHdl;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -39,6 +44,29 @@ final class Physics {
   private static final int SOLVER_ITERATIONS = 10;
 
   private static final int PIPE_STAVES = 16;
+
+  /**
+   * A body whose speeds, averaged over {@link #REST_SAMPLES} steps, stay below these for {@link
+   * #REST_STEPS} steps is at rest: the engine stops stepping it until something wakes it (a contact
+   * with a moving body, a push, a leg that moves where it touches, a binding).
+   */
+  static final double REST_LINEAR = 0.002;
+
+  /** See {@link #REST_LINEAR} (rad/s). */
+  static final double REST_ANGULAR = 0.02;
+
+  private static final int REST_STEPS = 20;
+  private static final int REST_SAMPLES = 10;
+
+  /** Lets the engine stop stepping {@code body} while it rests (see {@link #REST_LINEAR}). */
+  static void restWhenStill(DBody body) {
+    body.setAutoDisableLinearThreshold(REST_LINEAR);
+    body.setAutoDisableAngularThreshold(REST_ANGULAR);
+    body.setAutoDisableSteps(REST_STEPS);
+    body.setAutoDisableTime(0);
+    body.setAutoDisableAverageSamplesCount(REST_SAMPLES);
+    body.setAutoDisableFlag(true);
+  }
 
   private static final Logger LOG = LoggerFactory.getLogger(Physics.class);
 
@@ -125,7 +153,7 @@ final class Physics {
     ENGINE.lock();
     raysOnly = true;
     try {
-      space.collide(null, this::near);
+      space.collide(null, nearCallback);
     } finally {
       raysOnly = false;
       ENGINE.unlock();
@@ -137,18 +165,37 @@ final class Physics {
     ENGINE.lock();
     try {
       DMisc.dRandSetSeed(seed);
-      space.collide(null, this::near);
+      space.collide(null, nearCallback);
       world.quickStep(dt);
       seed = DMisc.dRandGetSeed();
     } finally {
       ENGINE.unlock();
     }
+    loadLegs();
     contacts.empty();
   }
+
+  private final DGeom.DNearCallback nearCallback = this::near;
 
   private void near(Object data, DGeom o1, DGeom o2) {
     GeomTag t1 = (GeomTag) o1.getData();
     GeomTag t2 = (GeomTag) o2.getData();
+    if (t1.kind() == GeomTag.Kind.ATOM || t2.kind() == GeomTag.Kind.ATOM) {
+      // An atom's space near something else: look inside, unless only rays are cast and neither is
+      // a ray.
+      if (raysOnly && t1.kind() != GeomTag.Kind.RAY && t2.kind() != GeomTag.Kind.RAY) {
+        return;
+      }
+      if (!raysOnly && still(t1) && still(t2)) {
+        // Nothing moves: the contacts would be those of the last step, which the solver ignores
+        // between resting bodies; the tips keep the contact state they had.
+        return;
+      }
+      if (t1.atom() != t2.atom()) {
+        OdeHelper.spaceCollide2(o1, o2, data, nearCallback);
+      }
+      return;
+    }
     if (t1.kind() == GeomTag.Kind.RAY || t2.kind() == GeomTag.Kind.RAY) {
       ray(t1, o1, t2, o2);
       return;
@@ -161,10 +208,20 @@ final class Physics {
     }
     DBody b1 = o1.getBody();
     DBody b2 = o2.getBody();
+    if (b1 == null && b2 != null) {
+      // The engine would swap the bodies of such a contact and turn its normal, but not its first
+      // friction direction: the surface motion below is computed for body 1 being o1's.
+      near(data, o2, o1);
+      return;
+    }
     if (b1 != null && b2 != null && OdeHelper.areConnectedExcluding(b1, b2, DContactJoint.class)) {
       return;
     }
     int n = OdeHelper.collide(o1, o2, MAX_CONTACTS, buffer.getGeomBuffer());
+    LegModel l1 = t1.kind() == GeomTag.Kind.LEG ? t1.leg() : null;
+    LegModel l2 = t2.kind() == GeomTag.Kind.LEG ? t2.leg() : null;
+    boolean kinematic1 = l1 instanceof KinematicLeg;
+    boolean kinematic2 = l2 instanceof KinematicLeg;
     for (int i = 0; i < n; i++) {
       DContact contact = buffer.get(i);
       contact.surface.mode =
@@ -174,21 +231,145 @@ final class Physics {
       contact.surface.mu = friction;
       contact.surface.soft_erp = 0.2;
       contact.surface.soft_cfm = 1e-4;
-      OdeHelper.createContactJoint(world, contacts, contact).attach(b1, b2);
+      boolean moving1 = l1 != null && l1.movesOnItsCarrier();
+      boolean moving2 = l2 != null && l2.movesOnItsCarrier();
+      if (moving1 || moving2) {
+        surfaceMotion(contact, l1, l2);
+        // A leg that moves where it touches something wakes its atom.
+        if (moving1 && b1 != null) {
+          b1.enable();
+        }
+        if (moving2 && b2 != null) {
+          b2.enable();
+        }
+      }
+      DContactJoint joint = OdeHelper.createContactJoint(world, contacts, contact);
+      joint.attach(b1, b2);
+      if (kinematic1 || kinematic2) {
+        Load load = nextLoad();
+        joint.setFeedback(load.feedback);
+        load.set(kinematic1 ? l1 : null, kinematic2 ? l2 : null, contact.geom.pos);
+      }
       touch(t1, contact.geom.pos);
       touch(t2, contact.geom.pos);
     }
   }
 
+  /**
+   * Gives a contact the velocity of the legs' surfaces relative to their bodies (a kinematic leg
+   * turning on its kernel), so the solver makes the surfaces, not the bodies, stick or slide: the
+   * contact's friction directions are chosen here, and each "motion" is minus the relative surface
+   * velocity along one of them (the engine's sign: body 1 relative to body 2).
+   */
+  private void surfaceMotion(DContact contact, @Nullable LegModel l1, @Nullable LegModel l2) {
+    DVector3C at = contact.geom.pos;
+    DVector3C normal = contact.geom.normal;
+    double ux = 0;
+    double uy = 0;
+    double uz = 0;
+    if (l1 != null) {
+      l1.velocityAt(at, velocity);
+      ux += velocity.get0();
+      uy += velocity.get1();
+      uz += velocity.get2();
+    }
+    if (l2 != null) {
+      l2.velocityAt(at, velocity);
+      ux -= velocity.get0();
+      uy -= velocity.get1();
+      uz -= velocity.get2();
+    }
+    DVector3 t1 = contact.fdir1;
+    OdeMath.dPlaneSpace(normal, t1, t2);
+    // The engine takes its second direction as normal × fdir1.
+    t2.eqCross(normal, t1);
+    contact.surface.mode |=
+        OdeConstants.dContactFDir1
+            | OdeConstants.dContactMotion1
+            | OdeConstants.dContactMotion2
+            | OdeConstants.dContactMotionN;
+    contact.surface.motion1 = -(ux * t1.get0() + uy * t1.get1() + uz * t1.get2());
+    contact.surface.motion2 = -(ux * t2.get0() + uy * t2.get1() + uz * t2.get2());
+    contact.surface.motionN = -(ux * normal.get0() + uy * normal.get1() + uz * normal.get2());
+  }
+
+  private final DVector3 velocity = new DVector3();
+  private final DVector3 t2 = new DVector3();
+
+  /** A contact on a kinematic leg: its force, read after the step, loads the leg. */
+  private static final class Load {
+    final DJointFeedback feedback = new DJointFeedback();
+    final DVector3 at = new DVector3();
+    @Nullable LegModel leg1;
+    @Nullable LegModel leg2;
+
+    void set(@Nullable LegModel leg1, @Nullable LegModel leg2, DVector3C at) {
+      // The engine leaves the feedback of a contact between resting bodies as it was.
+      feedback.f1.setZero();
+      feedback.f2.setZero();
+      feedback.t1.setZero();
+      feedback.t2.setZero();
+      this.leg1 = leg1;
+      this.leg2 = leg2;
+      this.at.set(at);
+    }
+  }
+
+  private final List<Load> loads = new ArrayList<>();
+  private int loadCount;
+
+  private Load nextLoad() {
+    if (loadCount == loads.size()) {
+      loads.add(new Load());
+    }
+    return loads.get(loadCount++);
+  }
+
+  /**
+   * Tells kinematic legs the torque their contacts of the last step put on them. The engine's
+   * quick-step (ode4j 0.5.3) leaves the force on the joint's first body in {@code f2} and does not
+   * fill {@code f1}; a contact pushes its second body with the opposite force.
+   */
+  private void loadLegs() {
+    for (int i = 0; i < loadCount; i++) {
+      Load load = loads.get(i);
+      if (load.leg1 != null) {
+        loadLeg(load.leg1, load.at, load.feedback.f2, 1);
+      }
+      if (load.leg2 != null) {
+        loadLeg(load.leg2, load.at, load.feedback.f2, -1);
+      }
+    }
+    loadCount = 0;
+  }
+
+  private static void loadLeg(LegModel leg, DVector3C at, DVector3C f, double sign) {
+    DVector3 pivot = leg.pivot();
+    double rx = at.get0() - pivot.get0();
+    double ry = at.get1() - pivot.get1();
+    double rz = at.get2() - pivot.get2();
+    leg.addLoad(
+        sign * (ry * f.get2() - rz * f.get1()),
+        sign * (rz * f.get0() - rx * f.get2()),
+        sign * (rx * f.get1() - ry * f.get0()));
+  }
+
+  /** A resting atom or the world, for collisions. */
+  private static boolean still(GeomTag tag) {
+    AtomModel atom = tag.atom();
+    return tag.kind() == GeomTag.Kind.WORLD || (atom != null && atom.still);
+  }
+
   /** Marks a leg's tip as touching if the contact is on its far cap. */
   private void touch(GeomTag tag, DVector3C at) {
     LegModel leg = tag.leg();
-    if (tag.kind() != GeomTag.Kind.LEG || leg == null || leg.contact) {
+    if (tag.kind() != GeomTag.Kind.LEG || leg == null || leg.touching) {
       return;
     }
     DVector3 tip = leg.tip();
     if (tip.distance(at) <= 1.5 * legRadius) {
       leg.contact = true;
+      leg.touching = true;
     }
   }
 

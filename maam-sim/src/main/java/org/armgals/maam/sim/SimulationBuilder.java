@@ -26,6 +26,7 @@ public final class SimulationBuilder {
   Pacer pacer = Pacer.asFastAsPossible();
   @Nullable Writer trace;
   final Map<String, String> traceAttributes = new LinkedHashMap<>();
+  LegDynamics legDynamics = LegDynamics.JOINTED;
 
   SimulationBuilder(Scene scene) {
     this.scene = requireNonNull(scene, "scene");
@@ -70,6 +71,15 @@ public final class SimulationBuilder {
   /** The controller of atom {@code id}. */
   public SimulationBuilder controller(int id, Controller controller) {
     controllerById.put(id, requireNonNull(controller, "controller"));
+    return this;
+  }
+
+  /**
+   * How legs move: {@link LegDynamics#KINEMATIC} (the default, fast) or {@link LegDynamics#JOINTED}
+   * (each leg a body on a universal joint).
+   */
+  public SimulationBuilder legDynamics(LegDynamics dynamics) {
+    this.legDynamics = requireNonNull(dynamics, "dynamics");
     return this;
   }
 

@@ -48,7 +48,7 @@ final class SimulationImpl implements Simulation {
     List<Scene.Placement> placements = new ArrayList<>(scene.atoms());
     placements.sort(Comparator.comparingInt(Scene.Placement::id));
     for (Scene.Placement p : placements) {
-      AtomModel atom = new AtomModel(physics, p, scene.params());
+      AtomModel atom = new AtomModel(physics, p, scene.params(), b.legDynamics);
       atoms.add(atom);
       bodies.put(p.id(), new BodyView(this, atom, sense(atom)));
       Controller c = b.controllerById.get(p.id());
@@ -172,14 +172,24 @@ final class SimulationImpl implements Simulation {
   private void physicsStep() {
     for (AtomModel atom : atoms) {
       if (atom.pushX != 0 || atom.pushY != 0 || atom.pushZ != 0) {
+        atom.kernel.enable();
         atom.kernel.addForce(atom.pushX, atom.pushY, atom.pushZ);
       }
       boolean on = atom.motorsOn();
       for (LegModel leg : atom.legs.values()) {
-        leg.servo(on);
+        leg.servo(on, dt);
       }
     }
+    for (Binding binding : bindings) {
+      binding.follow();
+    }
+    for (AtomModel atom : atoms) {
+      atom.beforeCollisions();
+    }
     physics.step(dt);
+    for (Binding binding : bindings) {
+      binding.loadLegs();
+    }
     timeNanos += stepNanos;
     for (AtomModel atom : atoms) {
       if (atom.drain(dt)) {
@@ -245,8 +255,8 @@ final class SimulationImpl implements Simulation {
         legs.add(
             new LegSensors(
                 l,
-                leg.joint.getAngle1(),
-                leg.joint.getAngle2(),
+                leg.angle1(),
+                leg.angle2(),
                 leg.torque1,
                 leg.torque2,
                 leg.contact,

@@ -5,13 +5,14 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.ArrayList;
 import java.util.List;
 import org.armgals.maam.spi.Leg;
-import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 
 class BindingTest {
 
-  private static List<SimEvent> runLocked(Scene scene, int cycles) {
+  private static List<SimEvent> runLocked(LegDynamics dynamics, Scene scene, int cycles) {
     List<SimEvent> events = new ArrayList<>();
-    try (Simulation s = Simulation.builder(scene).build()) {
+    try (Simulation s = Simulation.builder(scene).legDynamics(dynamics).build()) {
       s.atom(1).bind(Leg.PX);
       s.atom(2).bind(Leg.MX);
       for (int i = 0; i < cycles; i++) {
@@ -22,42 +23,51 @@ class BindingTest {
     return events;
   }
 
-  @Test
-  void tipsWithinDistanceAndAlignmentBind() {
-    assertThat(runLocked(TestScenes.facing(0.003, 0, ""), 3))
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void tipsWithinDistanceAndAlignmentBind(LegDynamics dynamics) {
+    assertThat(runLocked(dynamics, TestScenes.facing(0.003, 0, ""), 3))
         .containsExactly(new SimEvent.Bound(0, 1, Leg.PX, 2, Leg.MX));
   }
 
-  @Test
-  void tipsTooFarApartDoNotBind() {
-    assertThat(runLocked(TestScenes.facing(0.02, 0, ""), 20)).isEmpty();
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void tipsTooFarApartDoNotBind(LegDynamics dynamics) {
+    assertThat(runLocked(dynamics, TestScenes.facing(0.02, 0, ""), 20)).isEmpty();
   }
 
-  @Test
-  void misalignedTipsDoNotBind() {
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void misalignedTipsDoNotBind(LegDynamics dynamics) {
     // Atom 2 turned 25 degrees about z: its -x leg is 25 degrees off the reverse of 1's +x leg.
     Scene scene = TestScenes.facing(-0.002, 25, "");
-    assertThat(runLocked(scene, 20)).isEmpty();
+    assertThat(runLocked(dynamics, scene, 20)).isEmpty();
   }
 
-  @Test
-  void onlyLockedTipsBindUnlessAutoLockIsOn() {
-    try (Simulation s = Simulation.builder(TestScenes.facing(0.003, 0, "")).build()) {
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void onlyLockedTipsBindUnlessAutoLockIsOn(LegDynamics dynamics) {
+    try (Simulation s =
+        Simulation.builder(TestScenes.facing(0.003, 0, "")).legDynamics(dynamics).build()) {
       s.atom(1).bind(Leg.PX);
       s.runCycles(5);
       assertThat(s.atom(1).sensors().leg(Leg.PX).neighbour()).isEmpty();
     }
     try (Simulation s =
-        Simulation.builder(TestScenes.facing(0.003, 0, "param autoLock true\n")).build()) {
+        Simulation.builder(TestScenes.facing(0.003, 0, "param autoLock true\n"))
+            .legDynamics(dynamics)
+            .build()) {
       s.runCycles(2);
       assertThat(s.atom(1).sensors().leg(Leg.PX).neighbour()).hasValue(2);
     }
   }
 
-  @Test
-  void aBindingHoldsBelowItsStrengthAndBreaksAboveIt() {
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void aBindingHoldsBelowItsStrengthAndBreaksAboveIt(LegDynamics dynamics) {
     double strength = AtomParams.defaults().bindStrength();
-    try (Simulation s = Simulation.builder(TestScenes.boundPair("")).build()) {
+    try (Simulation s =
+        Simulation.builder(TestScenes.boundPair("")).legDynamics(dynamics).build()) {
       for (int i = 0; i < 30; i++) {
         s.push(1, new Vec3(-0.5 * strength, 0, 0));
         s.push(2, new Vec3(0.5 * strength, 0, 0));
@@ -82,9 +92,11 @@ class BindingTest {
     }
   }
 
-  @Test
-  void unbindReleasesTheBindingOnCommand() {
-    try (Simulation s = Simulation.builder(TestScenes.boundPair("")).build()) {
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void unbindReleasesTheBindingOnCommand(LegDynamics dynamics) {
+    try (Simulation s =
+        Simulation.builder(TestScenes.boundPair("")).legDynamics(dynamics).build()) {
       s.runCycle();
       s.atom(2).unbind(Leg.MX);
       s.runCycle();

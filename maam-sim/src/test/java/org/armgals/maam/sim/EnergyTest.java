@@ -5,16 +5,19 @@ import static org.assertj.core.data.Offset.offset;
 
 import java.time.Duration;
 import org.armgals.maam.spi.Leg;
-import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 
 class EnergyTest {
 
   private static final String FREE = "scene free\ngravity 0 0 0\n";
 
-  @Test
-  void withLimpLegsTheBatteryDrainsByTheIdleDrawAlone() {
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void withLimpLegsTheBatteryDrainsByTheIdleDrawAlone(LegDynamics dynamics) {
     AtomParams p = AtomParams.defaults();
-    try (Simulation s = Simulation.builder(Scenes.parse(FREE + "atom 1 0 0 1")).build()) {
+    try (Simulation s =
+        Simulation.builder(Scenes.parse(FREE + "atom 1 0 0 1")).legDynamics(dynamics).build()) {
       for (Leg leg : Leg.values()) {
         s.atom(1).relax(leg);
       }
@@ -26,12 +29,14 @@ class EnergyTest {
     }
   }
 
-  @Test
-  void movingLegsCostTheirMechanicalWorkOverTheEfficiencyOnTopOfTheIdleDraw() {
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void movingLegsCostTheirMechanicalWorkOverTheEfficiencyOnTopOfTheIdleDraw(LegDynamics dynamics) {
     AtomParams p = AtomParams.defaults();
     double[] work = {0};
     try (Simulation s =
         Simulation.builder(Scenes.parse(FREE + "atom 1 0 0 1"))
+            .legDynamics(dynamics)
             .controller(
                 1,
                 (body, cycle) -> {
@@ -50,11 +55,13 @@ class EnergyTest {
     assertThat(work[0]).isGreaterThan(1e-4).isLessThan(6 * 2 * p.maxTorque() * p.maxSpeed());
   }
 
-  @Test
-  void anEmptyBatteryStopsTheMotors() {
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void anEmptyBatteryStopsTheMotors(LegDynamics dynamics) {
     // 0.05 J at a 0.1 W idle draw: empty after half a second.
     try (Simulation s =
         Simulation.builder(Scenes.parse(FREE + "param batteryCapacity 0.05\natom 1 0 0 1"))
+            .legDynamics(dynamics)
             .build()) {
       s.runFor(Duration.ofMillis(600));
       assertThat(s.atom(1).sensors().energy()).isZero();
@@ -64,6 +71,7 @@ class EnergyTest {
     }
     try (Simulation s =
         Simulation.builder(Scenes.parse(FREE + "param batteryCapacity 0.05\natom 1 0 0 1"))
+            .legDynamics(dynamics)
             .build()) {
       boolean reported = false;
       for (int i = 0; i < 60; i++) {
@@ -74,9 +82,11 @@ class EnergyTest {
     }
   }
 
-  @Test
-  void aChargedBatteryDrivesTheSameLegToItsTarget() {
-    try (Simulation s = Simulation.builder(Scenes.parse(FREE + "atom 1 0 0 1")).build()) {
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void aChargedBatteryDrivesTheSameLegToItsTarget(LegDynamics dynamics) {
+    try (Simulation s =
+        Simulation.builder(Scenes.parse(FREE + "atom 1 0 0 1")).legDynamics(dynamics).build()) {
       s.atom(1).setLegTarget(Leg.PZ, 0.4, 0);
       s.runFor(Duration.ofMillis(300));
       s.runCycle();

@@ -5,13 +5,16 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.time.Duration;
 import java.util.SplittableRandom;
 import org.armgals.maam.spi.Leg;
-import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 
 class PhysicsSanityTest {
 
-  @Test
-  void anAtomAtRestStaysAtRest() {
-    try (Simulation s = Simulation.builder(Scenes.builtIn("single")).build()) {
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void anAtomAtRestStaysAtRest(LegDynamics dynamics) {
+    try (Simulation s =
+        Simulation.builder(Scenes.builtIn("single")).legDynamics(dynamics).build()) {
       s.runFor(Duration.ofMillis(500));
       AtomSensors settled = s.atom(1).sensors();
       s.runFor(Duration.ofSeconds(2));
@@ -26,12 +29,14 @@ class PhysicsSanityTest {
     }
   }
 
-  @Test
-  void aLegNeverLeavesItsCone() {
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void aLegNeverLeavesItsCone(LegDynamics dynamics) {
     double half = AtomParams.defaults().coneHalfAngle();
     SplittableRandom random = new SplittableRandom(3);
     try (Simulation s =
         Simulation.builder(Scenes.builtIn("chain4"))
+            .legDynamics(dynamics)
             .controllers(
                 id ->
                     (body, cycle) -> {
@@ -56,9 +61,11 @@ class PhysicsSanityTest {
     }
   }
 
-  @Test
-  void aBoundPairMovesAsOne() {
-    try (Simulation s = Simulation.builder(TestScenes.boundPair("")).build()) {
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void aBoundPairMovesAsOne(LegDynamics dynamics) {
+    try (Simulation s =
+        Simulation.builder(TestScenes.boundPair("")).legDynamics(dynamics).build()) {
       Vec3 start2 = s.atom(2).sensors().position();
       double apart = TestScenes.distance(start2, s.atom(1).sensors().position());
       for (int i = 0; i < 100; i++) {

@@ -12,14 +12,17 @@ import java.util.List;
 import java.util.SplittableRandom;
 import org.armgals.maam.spi.Leg;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 
 class TraceAndDeterminismTest {
 
   /** Runs the chain of four with seeded random targets, messages, loss and faults. */
-  private static String trace(long seed) {
+  private static String trace(LegDynamics dynamics, long seed) {
     StringWriter out = new StringWriter();
     try (Simulation s =
         Simulation.builder(Scenes.builtIn("chain4"))
+            .legDynamics(dynamics)
             .seed(seed)
             .packetLoss(0.3)
             .trace(out)
@@ -47,17 +50,20 @@ class TraceAndDeterminismTest {
             MessageDigest.getInstance("SHA-256").digest(text.getBytes(StandardCharsets.UTF_8)));
   }
 
-  @Test
-  void sameSeedAndInputsGiveTheSameTraceBitForBit() throws NoSuchAlgorithmException {
-    String first = trace(42);
-    String second = trace(42);
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void sameSeedAndInputsGiveTheSameTraceBitForBit(LegDynamics dynamics)
+      throws NoSuchAlgorithmException {
+    String first = trace(dynamics, 42);
+    String second = trace(dynamics, 42);
     assertThat(sha256(second)).isEqualTo(sha256(first));
-    assertThat(sha256(trace(43))).isNotEqualTo(sha256(first));
+    assertThat(sha256(trace(dynamics, 43))).isNotEqualTo(sha256(first));
   }
 
-  @Test
-  void theTraceHasAHeaderThenOneLinePerCycleWithAtomsAndEvents() {
-    List<String> lines = trace(7).lines().toList();
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void theTraceHasAHeaderThenOneLinePerCycleWithAtomsAndEvents(LegDynamics dynamics) {
+    List<String> lines = trace(dynamics, 7).lines().toList();
     assertThat(lines).hasSize(81);
     assertThat(lines.get(0))
         .startsWith("{\"type\":\"header\",\"format\":\"armgals-maam-sim-trace\",\"version\":1,")

@@ -2,12 +2,18 @@ package org.armgals.maam.spi;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import org.armgals.maam.sim.LegDynamics;
 import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;
 import org.junit.jupiter.api.Test;
 
-/** The framework's body SPI contract, held against the simulator's atoms. */
+/** The framework's body SPI contract, held against the simulator's atoms (jointed legs). */
 class SimBodyContractTest extends BodyContract {
+
+  /** The leg model the atoms are built with. */
+  LegDynamics dynamics() {
+    return LegDynamics.JOINTED;
+  }
 
   @Override
   Body atom(String id) {
@@ -15,14 +21,19 @@ class SimBodyContractTest extends BodyContract {
       throw new IllegalArgumentException("simulated atom ids are a<number>, not '" + id + "'");
     }
     Simulation s =
-        Simulation.builder(Scenes.parse("atom " + id.substring(1) + " 0 0 0.07 tripod")).build();
+        Simulation.builder(Scenes.parse("atom " + id.substring(1) + " 0 0 0.07 tripod"))
+            .legDynamics(dynamics())
+            .build();
     s.runCycle();
     return s.body(Integer.parseInt(id.substring(1)));
   }
 
   @Test
   void aTargetCommandedThroughTheSpiIsReadBackAfterTheLegMoves() {
-    Simulation s = Simulation.builder(Scenes.parse("gravity 0 0 0\natom 1 0 0 1")).build();
+    Simulation s =
+        Simulation.builder(Scenes.parse("gravity 0 0 0\natom 1 0 0 1"))
+            .legDynamics(dynamics())
+            .build();
     Body body = s.body(1);
     LegAngles target = new LegAngles(0.3, 1.0);
     body.command(Atom.target(Leg.PZ), target);
@@ -40,6 +51,7 @@ class SimBodyContractTest extends BodyContract {
     Simulation s =
         Simulation.builder(
                 Scenes.parse("gravity 0 0 0\natom 1 0 0 1\natom 2 0.22 0 1\nbond 1:+x 2:-x"))
+            .legDynamics(dynamics())
             .build();
     s.runCycle();
     Body one = s.body(1);

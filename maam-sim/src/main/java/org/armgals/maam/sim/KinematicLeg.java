@@ -1,0 +1,252 @@
+package org.armgals.maam.sim;
+
+import org.armgals.maam.spi.Leg;
+import org.ode4j.math.DQuaternion;
+import org.ode4j.math.DQuaternionC;
+import org.ode4j.math.DVector3;
+import org.ode4j.math.DVector3C;
+import org.ode4j.ode.DBody;
+import org.ode4j.ode.DCapsule;
+import org.ode4j.ode.DRay;
+
+/**
+ * A leg as a capsule of its atom's one body, turned about its pivot by a servo that the world can
+ * resist: the kinematic model ({@link LegDynamics#KINEMATIC}, decision 0029).
+ *
+ * <p>Each step the servo asks each axis for {@code clamp(servoGain · error, ±maxSpeed)}; the new
+ * angles are brought back into the cone, and the capsule is placed at them. The world pushes back
+ * through the torque its contacts and binding put on the leg about its pivot (its load, measured in
+ * the previous step): an axis whose load exceeds the torque limit gives way, at a speed that grows
+ * with the excess; a limp leg (motors off) gives way to any load. The leg's surface velocity goes
+ * into its contacts, so a leg that sweeps its tip along the ground pushes the atom the other way,
+ * within friction.
+ */
+final class KinematicLeg extends LegModel {
+
+  private final DBody kernel;
+  private final DCapsule capsule;
+  private final double[] axis1;
+  private final double[] axis2;
+  private final DQuaternion rest;
+  private final double[] restDirection;
+  private final double radius;
+  private final double length;
+
+  /** The leg's moment of inertia about its pivot (kg·m²), as a rod. */
+  private final double inertia;
+
+  private double a1;
+  private double a2;
+  private double rate1;
+  private double rate2;
+  private double load1;
+  private double load2;
+  private double loadX;
+  private double loadY;
+  private double loadZ;
+  private final double[] next = new double[2];
+  private DQuaternion local = new DQuaternion(1, 0, 0, 0);
+  private DVector3 localDirection = new DVector3();
+  private final DVector3 localTip = new DVector3();
+  private DVector3 localAxis2 = new DVector3();
+
+  KinematicLeg(AtomModel atom, Leg leg, DBody kernel, DCapsule capsule, DRay ray) {
+    super(atom, leg, ray);
+    this.kernel = kernel;
+    this.capsule = capsule;
+    this.axis1 = Frames.axis1(leg);
+    this.axis2 = Frames.axis2(leg);
+    this.rest = Frames.zOnto(leg);
+    this.restDirection = new double[] {leg.x(), leg.y(), leg.z()};
+    AtomParams p = atom.params;
+    this.radius = p.kernelRadius();
+    this.length = p.legLength();
+    this.inertia = p.legMass() * length * length / 3;
+    place();
+  }
+
+  /**
+   * Places the capsule at the current angles. The joint turns the leg by {@code -a1} about axis 1
+   * (fixed on the kernel), then by {@code -a2} about axis 2 (fixed on the leg): the engine's
+   * universal joint's convention, which the jointed model reads.
+   */
+  private void place() {
+    DQuaternion turn1 = Frames.about(axis1, -a1);
+    local = Frames.multiply(Frames.multiply(turn1, Frames.about(axis2, -a2)), rest);
+    localDirection = Frames.rotate(local, 0, 0, 1);
+    localAxis2 = Frames.rotate(turn1, axis2[0], axis2[1], axis2[2]);
+    double half = length / 2;
+    capsule.setOffsetPosition(
+        restDirection[0] * radius + localDirection.get0() * half,
+        restDirection[1] * radius + localDirection.get1() * half,
+        restDirection[2] * radius + localDirection.get2() * half);
+    capsule.setOffsetQuaternion(local);
+    localTip.set(
+        restDirection[0] * radius + localDirection.get0() * length,
+        restDirection[1] * radius + localDirection.get1() * length,
+        restDirection[2] * radius + localDirection.get2() * length);
+  }
+
+  @Override
+  double angle1() {
+    return a1;
+  }
+
+  @Override
+  double angle2() {
+    return a2;
+  }
+
+  @Override
+  void servo(boolean motorsOn, double dt) {
+    boolean on = motorsOn && powered && !failed;
+    double w1 = rate(on, target[0] - a1, load1);
+    double w2 = rate(on, target[1] - a2, load2);
+    double r1 = 0;
+    double r2 = 0;
+    if (w1 != 0 || w2 != 0) {
+      atom.cone.clamp(a1 + w1 * dt, a2 + w2 * dt, next);
+      r1 = (next[0] - a1) / dt;
+      r2 = (next[1] - a2) / dt;
+      a1 = next[0];
+      a2 = next[1];
+      place();
+    }
+    double accel1 = (r1 - rate1) / dt;
+    double accel2 = (r2 - rate2) / dt;
+    rate1 = r1;
+    rate2 = r2;
+    double limit = on ? torqueLimit : 0;
+    torque1 = clamp(inertia * accel1 - load1, limit);
+    torque2 = clamp(inertia * accel2 - load2, limit);
+    if (accel1 != 0 || accel2 != 0) {
+      // The kernel takes the reaction of the torque that accelerates the leg (the legs' mass is
+      // the body's, so nothing else would turn it back).
+      double k1 = inertia * accel1;
+      double k2 = inertia * accel2;
+      double tx = k1 * axis1[0] + k2 * localAxis2.get0();
+      double ty = k1 * axis1[1] + k2 * localAxis2.get1();
+      double tz = k1 * axis1[2] + k2 * localAxis2.get2();
+      if (!kernel.isEnabled()
+          && Math.sqrt(tx * tx + ty * ty + tz * tz) * dt
+              > Physics.REST_ANGULAR * atom.turnInertia) {
+        // A reaction that would turn the resting atom faster than rest allows wakes it; a smaller
+        // one is taken by what it rests on.
+        kernel.enable();
+      }
+      if (kernel.isEnabled()) {
+        kernel.addRelTorque(tx, ty, tz);
+      }
+    }
+  }
+
+  /**
+   * The speed an axis turns at (rad/s): the servo's, unless the load exceeds what the motor can
+   * hold (nothing when its motors are off), then the load's way, faster the larger the excess.
+   */
+  private double rate(boolean on, double error, double load) {
+    AtomParams p = atom.params;
+    double excess = Math.abs(load) - (on ? torqueLimit : 0);
+    if (excess > 0) {
+      return Math.signum(load) * Math.min(p.maxSpeed(), p.servoGain() * excess / p.maxTorque());
+    }
+    return on ? clamp(p.servoGain() * error, p.maxSpeed()) : 0;
+  }
+
+  private static double clamp(double x, double limit) {
+    return Math.max(-limit, Math.min(limit, x));
+  }
+
+  @Override
+  void addLoad(double tx, double ty, double tz) {
+    loadX += tx;
+    loadY += ty;
+    loadZ += tz;
+  }
+
+  @Override
+  void afterStep(double dt) {
+    if (!kernel.isEnabled()) {
+      // At rest: the engine did not solve the contacts, and the load is what it was.
+      loadX = 0;
+      loadY = 0;
+      loadZ = 0;
+      return;
+    }
+    DVector3 t = new DVector3();
+    kernel.vectorFromWorld(loadX, loadY, loadZ, t);
+    // Angles grow with negative turns about the axes.
+    load1 = -(t.get0() * axis1[0] + t.get1() * axis1[1] + t.get2() * axis1[2]);
+    load2 = -t.dot(localAxis2);
+    loadX = 0;
+    loadY = 0;
+    loadZ = 0;
+  }
+
+  @Override
+  double motorPower() {
+    return Math.abs(torque1 * rate1) + Math.abs(torque2 * rate2);
+  }
+
+  @Override
+  DBody carrier() {
+    return kernel;
+  }
+
+  /** The leg's rotation in the kernel's frame (its local z is the leg's direction). */
+  DQuaternionC localRotation() {
+    return local;
+  }
+
+  /** The tip in the kernel's frame. */
+  DVector3 localTip() {
+    return new DVector3(localTip);
+  }
+
+  /** Whether the leg turned in the last step. */
+  boolean moved() {
+    return rate1 != 0 || rate2 != 0;
+  }
+
+  @Override
+  DVector3 direction() {
+    DVector3 d = new DVector3();
+    kernel.vectorToWorld(localDirection, d);
+    return d;
+  }
+
+  @Override
+  DVector3 tip() {
+    DVector3 t = new DVector3();
+    kernel.getRelPointPos(localTip, t);
+    return t;
+  }
+
+  @Override
+  DVector3 pivot() {
+    DVector3 p = new DVector3();
+    kernel.getRelPointPos(
+        restDirection[0] * radius, restDirection[1] * radius, restDirection[2] * radius, p);
+    return p;
+  }
+
+  @Override
+  boolean movesOnItsCarrier() {
+    return moved();
+  }
+
+  @Override
+  void velocityAt(DVector3C p, DVector3 out) {
+    // The leg's angular velocity relative to the kernel, in the kernel's frame, then the world's.
+    double wx = -(rate1 * axis1[0] + rate2 * localAxis2.get0());
+    double wy = -(rate1 * axis1[1] + rate2 * localAxis2.get1());
+    double wz = -(rate1 * axis1[2] + rate2 * localAxis2.get2());
+    DVector3 w = new DVector3();
+    kernel.vectorToWorld(wx, wy, wz, w);
+    DVector3 r = new DVector3(p).sub(pivot());
+    out.set(
+        w.get1() * r.get2() - w.get2() * r.get1(),
+        w.get2() * r.get0() - w.get0() * r.get2(),
+        w.get0() * r.get1() - w.get1() * r.get0());
+  }
+}
