@@ -8,6 +8,7 @@ import java.util.stream.Collectors;
 import org.armgals.examples.robots.Caterpillar;
 import org.armgals.examples.robots.EnergySaver;
 import org.armgals.examples.robots.ObstacleRobot;
+import org.armgals.examples.robots.Reconfigure;
 import org.armgals.examples.robots.Walker;
 
 /** The examples {@code armgals} knows, in the order {@code armgals list} shows them. */
@@ -27,6 +28,7 @@ public final class Catalog {
             new ObstacleRobot(),
             new EnergySaver(),
             EnergySaver.withoutMetaLevel(),
+            new Reconfigure(),
             new DemoExample()));
   }
 
