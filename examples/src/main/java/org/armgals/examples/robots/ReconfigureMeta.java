@@ -12,6 +12,7 @@ import org.armgals.examples.robots.ReconfigureSignals.Walls;
 import org.armgals.examples.sim.Journal;
 import org.armgals.maam.Adaptation;
 import org.armgals.maam.CycleReport;
+import org.jspecify.annotations.Nullable;
 
 /**
  * The behavioral meta level of {@link Reconfigure}'s chain, notified by every atom's robot. Its
@@ -48,8 +49,8 @@ final class ReconfigureMeta {
   private final long periodNanos;
   private final List<ReconfigureAtom> robots = new ArrayList<>();
   private final List<Integer> atomIds = new ArrayList<>();
-  private final List<Bonds> bonds = new ArrayList<>();
-  private final List<Beat> beats = new ArrayList<>();
+  private final List<@Nullable Bonds> bonds = new ArrayList<>();
+  private final List<@Nullable Beat> beats = new ArrayList<>();
   private Stage stage = Stage.CHAIN;
   private long wallsSince = -1;
   private long splitAt = -1;
@@ -80,7 +81,7 @@ final class ReconfigureMeta {
   }
 
   private void onCycle(int index, CycleReport report, Consumer<Adaptation> requests) {
-    Walls walls = null;
+    @Nullable Walls walls = null;
     for (CycleReport.Emission e : report.emissions()) {
       switch (e.signal()) {
         case Bonds b -> bonds.set(index, b);
@@ -96,7 +97,7 @@ final class ReconfigureMeta {
     }
   }
 
-  private void watchWalls(Walls walls, long now) {
+  private void watchWalls(@Nullable Walls walls, long now) {
     if (walls == null) {
       wallsSince = -1;
       return;
