@@ -51,7 +51,7 @@ public final class Reconfigure implements SimExample {
               + " atoms that splits into two pairs: --atoms does not apply to it (try"
               + " 'caterpillar')");
     }
-    return Scenes.parse(sceneText());
+    return Scenes.parse(sceneText(true));
   }
 
   @Override
@@ -87,13 +87,14 @@ public final class Reconfigure implements SimExample {
 
   /**
    * The chain along x, each atom turned 45° about x so it stands on two feet, as {@link
-   * ObstacleRobot}'s; the corridor's two walls ahead, either side of the path.
+   * ObstacleRobot}'s; the corridor's two walls ahead, either side of the path, unless {@code
+   * corridor} is false (open ground all the way, to compare).
    */
-  static String sceneText() {
+  static String sceneText(boolean corridor) {
     StringBuilder s = new StringBuilder("scene reconfigure\n");
     s.append("param maxTorque ").append(ObstacleGait.MAX_TORQUE).append('\n');
     double wallY = ReconfigureTuning.CORRIDOR_HALF_WIDTH + ReconfigureTuning.WALL_THICKNESS / 2;
-    for (int side : new int[] {1, -1}) {
+    for (int side : corridor ? new int[] {1, -1} : new int[0]) {
       s.append(
           String.format(
               Locale.ROOT,

@@ -14,6 +14,7 @@ import java.util.OptionalLong;
 import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
 import org.armgals.examples.robots.GaitsTestSupport.TestJournal;
+import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;
 import org.armgals.maam.spi.Atom;
 import org.armgals.maam.spi.Leg;
@@ -86,6 +87,24 @@ class ReconfigureTest {
       assertThat(crew.centre(List.of(3, 4)) - front).isGreaterThan(0.15);
       assertThat(crew.molecules()).containsExactly(List.of(1, 2), List.of(3, 4));
       assertThat(journal.adaptations).hasSize(4);
+    }
+  }
+
+  @Test
+  void onOpenGroundTheChainStaysOneMoleculeWithItsSchemas() {
+    RunSettings settings = GaitsTestSupport.settings(Optional.empty());
+    try (Simulation sim = Simulation.builder(Scenes.parse(Reconfigure.sceneText(false))).build()) {
+      TestJournal journal = new TestJournal(sim::timeNanos);
+      ReconfigureCrew crew = RECONFIGURE.startCrew(sim, settings, journal);
+      sim.runFor(Duration.ofSeconds(4));
+      // The front atom is past where the corridor would begin, and nothing happened.
+      assertThat(x(sim, 4)).isGreaterThan(ReconfigureTuning.CORRIDOR_START + 0.1);
+      assertThat(crew.meta().stage()).isEqualTo(ReconfigureMeta.Stage.CHAIN);
+      assertThat(journal.adaptations).isEmpty();
+      assertThat(crew.bonds()).isEqualTo(3);
+      assertThat(crew.molecules()).containsExactly(List.of(1, 2, 3, 4));
+      assertThat(names(crew, 2))
+          .containsExactly("chain", "listen", "follow", "crawl", "feet", "relay");
     }
   }
 
