@@ -9,6 +9,7 @@ import org.armgals.examples.robots.Caterpillar;
 import org.armgals.examples.robots.Distributed;
 import org.armgals.examples.robots.EnergySaver;
 import org.armgals.examples.robots.ObstacleRobot;
+import org.armgals.examples.robots.Reconfigure;
 import org.armgals.examples.robots.Walker;
 
 /** The examples {@code armgals} knows, in the order {@code armgals list} shows them. */
@@ -28,6 +29,7 @@ public final class Catalog {
             new ObstacleRobot(),
             new EnergySaver(),
             EnergySaver.withoutMetaLevel(),
+            new Reconfigure(),
             new Distributed(),
             new DemoExample()));
   }
