@@ -86,7 +86,8 @@ final class SimRun {
     try (Writer trace = Files.newBufferedWriter(dir.resolve(TRACE), StandardCharsets.UTF_8);
         Simulation sim = build(example, settings, scene, cycles, trace)) {
       RecordingJournal journal = new RecordingJournal(sim, recording);
-      recording.sample(sim);
+      // The first sample is taken after cycle 0, of the readings at its start (t = 0): the same
+      // readings as the trace's first line, with the scene's bonds made and its poses applied.
       try (Crew crew = example.start(sim, settings, journal)) {
         missed = drive(sim, cycles, settings, recording, progress);
         recording.end(sim.timeNanos());
