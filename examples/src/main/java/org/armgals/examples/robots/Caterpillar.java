@@ -99,7 +99,7 @@ public final class Caterpillar implements SimExample {
       CaterpillarSegment segment =
           new CaterpillarSegment(
               "segment" + id,
-              GaitsBody.of(sim, id),
+              TrackedBody.of(sim, id),
               sim::timeNanos,
               ids.size() - 1 - i,
               cycleSeconds);

@@ -67,7 +67,7 @@ final class CaterpillarModules {
 
     @Override
     public void perceive(Body body, Outputs out) {
-      GaitsBody.Place p = body.read(GaitsBody.POSITION);
+      TrackedBody.Place p = body.read(TrackedBody.POSITION);
       out.emit(TRAVEL, new Travel(p.x(), p.y()));
     }
   }

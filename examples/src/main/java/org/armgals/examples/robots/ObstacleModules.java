@@ -69,7 +69,7 @@ final class ObstacleModules {
 
     @Override
     public void perceive(Body body, Outputs out) {
-      out.emit(POSITION, new Position(body.read(ObstacleBody.POSITION)));
+      out.emit(POSITION, new Position(body.read(TrackedBody.POSITION).x()));
     }
   }
 

@@ -76,11 +76,7 @@ public final class ObstacleRobot implements SimExample {
       boolean front = i == ids.size() - 1;
       ObstacleAtom robot =
           new ObstacleAtom(
-              i,
-              new ObstacleBody(sim, id),
-              sim::timeNanos,
-              period,
-              front && withMeta ? meta : null);
+              i, TrackedBody.of(sim, id), sim::timeNanos, period, front && withMeta ? meta : null);
       meta.watch(id, robot);
       robots.add(robot);
       sim.setController(id, (body, cycle) -> robot.cycle());

@@ -67,7 +67,7 @@ public final class Walker implements SimExample {
     requireNonNull(journal, "journal");
     int id = sim.atomIds().get(0);
     WalkerRobot robot =
-        new WalkerRobot(GaitsBody.of(sim, id), sim::timeNanos, settings.period().toNanos() / 1e9);
+        new WalkerRobot(TrackedBody.of(sim, id), sim::timeNanos, settings.period().toNanos() / 1e9);
     BalanceWatch watch = new BalanceWatch(journal, id);
     robot.watchedBy((report, requests) -> watch.integrate(report));
     sim.setController(id, (atom, cycle) -> robot.cycle());

@@ -123,7 +123,7 @@ final class WalkerModules {
 
     @Override
     public void perceive(Body body, Outputs out) {
-      GaitsBody.Place p = body.read(GaitsBody.POSITION);
+      TrackedBody.Place p = body.read(TrackedBody.POSITION);
       out.emit(COURSE, new Course(p.x(), p.y()));
     }
   }

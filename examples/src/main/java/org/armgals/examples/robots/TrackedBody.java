@@ -13,11 +13,12 @@ import org.armgals.maam.spi.SensorKey;
 
 /**
  * A simulated atom's framework body with one more sensor, {@link #POSITION}: where the kernel is on
- * the ground plane, as an odometer or a beacon would tell a real atom. The simulator's framework
- * body ({@link Simulation#body}) has no position sensor yet; robots that watch their own progress
- * read this one. Used on the simulation's thread, like the body it wraps.
+ * the ground plane, as an odometer or a beacon would tell a real atom, which the simulator gives as
+ * ground truth. The framework's body SPI has no position sensor (an atom does not know where it is
+ * in the world); the example robots whose meta level watches their progress read this one. Used on
+ * the simulation's thread, like the body it wraps.
  */
-final class GaitsBody implements Body {
+final class TrackedBody implements Body {
 
   /** Where the atom is on the ground plane. */
   static final SensorKey<Place> POSITION = SensorKey.of("position", Place.class);
@@ -34,7 +35,7 @@ final class GaitsBody implements Body {
   private final AtomBody atom;
   private final Set<SensorKey<?>> sensors;
 
-  private GaitsBody(Body body, AtomBody atom) {
+  private TrackedBody(Body body, AtomBody atom) {
     this.body = body;
     this.atom = atom;
     Set<SensorKey<?>> all = new LinkedHashSet<>(body.sensors());
@@ -43,9 +44,9 @@ final class GaitsBody implements Body {
   }
 
   /** The body of {@code sim}'s atom {@code id}, with a position sensor. */
-  static GaitsBody of(Simulation sim, int id) {
+  static TrackedBody of(Simulation sim, int id) {
     requireNonNull(sim, "sim");
-    return new GaitsBody(sim.body(id), sim.atom(id));
+    return new TrackedBody(sim.body(id), sim.atom(id));
   }
 
   @Override
