@@ -144,7 +144,7 @@ final class Recording {
             "%.3f atom diameters/s (%.2f m each)",
             lastSeconds > 0 ? distance() / atomDiameter() / lastSeconds : 0.0,
             atomDiameter()));
-    entries.add(entry("energy used", "%.1f J", startEnergy - endEnergy));
+    entries.add(entry("energy used", "%.2f J", startEnergy - endEnergy));
     entries.add(entry("adaptations", "%d", adaptations.size()));
     for (Adaptation a : adaptations) {
       entries.add(

@@ -126,7 +126,7 @@ class EnergySaverTest {
     Summary summary =
         new EnergySaver(SMALL_BATTERY, true)
             .run(
-                settings(out, OptionalLong.of(150)),
+                settings(out, OptionalLong.of(350)),
                 new PrintStream(printed, true, StandardCharsets.UTF_8));
 
     assertThat(summary.entries())

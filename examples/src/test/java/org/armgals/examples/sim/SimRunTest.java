@@ -125,7 +125,7 @@ class SimRunTest {
     assertThat(entries.get("simulated time")).isEqualTo("0.20 s");
     assertThat(entries.get("distance")).matches("\\d+\\.\\d{3} m");
     assertThat(entries.get("speed")).matches("\\d+\\.\\d{3} atom diameters/s \\(0\\.22 m each\\)");
-    assertThat(entries.get("energy used")).matches("\\d+\\.\\d J");
+    assertThat(entries.get("energy used")).matches("\\d+\\.\\d{2} J");
     assertThat(Double.parseDouble(entries.get("energy used").replace(" J", ""))).isPositive();
     assertThat(entries.get("adaptations")).isEqualTo("1");
     // told at the start of cycle 5, at 50 ms of simulated time

@@ -84,21 +84,25 @@ final class JointedLeg extends LegModel {
    * Reads the torques the joint applied to the leg about its two axes in the last step, about the
    * joint's anchor (so the reaction that holds the leg's weight is not counted as motor torque),
    * and the two angle rates.
+   *
+   * <p>The engine's quick-step (ode4j 0.5.3) leaves in the feedback's {@code f2}, {@code t2} the
+   * force and torque (about its centre of mass) on the joint's first body, the kernel, and does not
+   * fill {@code f1}, {@code t1}. The leg takes the opposite wrench: as a couple at the anchor,
+   * {@code -(t2 - (anchor - kernel) x f2)}.
    */
   @Override
   void afterStep(double dt) {
     DVector3 anchor = this.anchor;
-    joint.getAnchor2(anchor);
-    DVector3C com = body.getPosition();
-    // torque about com = tau_joint + (anchor - com) x f  =>  tau_joint = t - (anchor - com) x f
+    joint.getAnchor(anchor);
+    DVector3C com = atom.kernel.getPosition();
     double rx = anchor.get0() - com.get0();
     double ry = anchor.get1() - com.get1();
     double rz = anchor.get2() - com.get2();
     DVector3 f = feedback.f2;
     DVector3 t = feedback.t2;
-    double jx = t.get0() - (ry * f.get2() - rz * f.get1());
-    double jy = t.get1() - (rz * f.get0() - rx * f.get2());
-    double jz = t.get2() - (rx * f.get1() - ry * f.get0());
+    double jx = -(t.get0() - (ry * f.get2() - rz * f.get1()));
+    double jy = -(t.get1() - (rz * f.get0() - rx * f.get2()));
+    double jz = -(t.get2() - (rx * f.get1() - ry * f.get0()));
     joint.getAxis1(axis);
     torque1 = jx * axis.get0() + jy * axis.get1() + jz * axis.get2();
     joint.getAxis2(axis);
