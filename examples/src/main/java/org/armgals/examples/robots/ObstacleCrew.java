@@ -31,10 +31,7 @@ final class ObstacleCrew implements Crew {
 
   /** Where the molecule's centre is along the path now (m): the mean of its kernels. */
   double centre() {
-    return sim.atomIds().stream()
-        .mapToDouble(id -> sim.atom(id).sensors().position().x())
-        .average()
-        .orElseThrow();
+    return StandingChain.centreX(sim, sim.atomIds());
   }
 
   @Override

@@ -96,19 +96,10 @@ public final class ObstacleRobot implements SimExample {
             ObstacleGait.STEP_HEIGHT / 2,
             ObstacleGait.STEP_DEPTH,
             ObstacleGait.STEP_HEIGHT));
-    for (int i = 0; i < ObstacleGait.ATOMS; i++) {
-      double x = ObstacleGait.FRONT_START - (ObstacleGait.ATOMS - 1 - i) * ObstacleGait.SPACING;
-      s.append(
-          String.format(
-              Locale.ROOT,
-              "atom %d %s 0 %s 1 0 0 45%n",
-              i + 1,
-              (float) x,
-              (float) ObstacleGait.STANDING_HEIGHT));
-    }
-    for (int i = 1; i < ObstacleGait.ATOMS; i++) {
-      s.append("bond ").append(i).append(":+x ").append(i + 1).append(":-x\n");
-    }
+    StandingChain.append(
+        s,
+        ObstacleGait.ATOMS,
+        ObstacleGait.FRONT_START - (ObstacleGait.ATOMS - 1) * ObstacleGait.SPACING);
     return s.toString();
   }
 }

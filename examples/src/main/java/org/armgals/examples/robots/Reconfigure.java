@@ -106,19 +106,7 @@ public final class Reconfigure implements SimExample {
               ReconfigureTuning.WALL_THICKNESS,
               ReconfigureTuning.WALL_HEIGHT));
     }
-    for (int i = 0; i < ReconfigureTuning.ATOMS; i++) {
-      double x = ReconfigureTuning.REAR_START + i * ObstacleGait.SPACING;
-      s.append(
-          String.format(
-              Locale.ROOT,
-              "atom %d %s 0 %s 1 0 0 45%n",
-              i + 1,
-              (float) x,
-              (float) ObstacleGait.STANDING_HEIGHT));
-    }
-    for (int i = 1; i < ReconfigureTuning.ATOMS; i++) {
-      s.append("bond ").append(i).append(":+x ").append(i + 1).append(":-x\n");
-    }
+    StandingChain.append(s, ReconfigureTuning.ATOMS, ReconfigureTuning.REAR_START);
     return s.toString();
   }
 }

@@ -68,10 +68,7 @@ final class ReconfigureCrew implements Crew {
 
   /** Where the atoms {@code ids} are along the path now (m): the mean of their kernels. */
   double centre(List<Integer> ids) {
-    return ids.stream()
-        .mapToDouble(id -> sim.atom(id).sensors().position().x())
-        .average()
-        .orElseThrow();
+    return StandingChain.centreX(sim, ids);
   }
 
   @Override
