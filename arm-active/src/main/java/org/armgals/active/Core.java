@@ -259,6 +259,15 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
     return f;
   }
 
+  /**
+   * Queues a synchronized request whose outcome goes to {@code reply} instead of a future the
+   * runtime makes (a request from another runtime, answered over its transport). Any thread.
+   */
+  <R extends @Nullable Object> void request(
+      ServantFunction<? super S, R> function, Guard<? super S> guard, Reply<R> reply) {
+    post(new Requests.Function<S, R>(function, guard, reply));
+  }
+
   private <R extends @Nullable Object> ReplyFuture<R> newFuture() {
     Core<?> sender = CURRENT.get();
     if (sender != null && sender.config.mode() == Mode.SYNCHRONOUS) {

@@ -466,14 +466,11 @@ final class JmsTransportImpl implements JmsTransport {
       throws WireFormatException {
     Event e = event(runtime, r);
     received.increment();
-    FutureValue<?> f;
     try {
-      f = inbound.ask(e.destination(), r);
+      inbound.ask(e.destination(), r, (value, failure) -> answer(replyTo, corr, value, failure));
     } catch (ActiveException | UnsupportedOperationException refused) {
       answer(replyTo, corr, null, refused);
-      return;
     }
-    f.toCompletionStage().whenComplete((value, failure) -> answer(replyTo, corr, value, failure));
   }
 
   private static Event event(String runtime, @Nullable Object v) throws WireFormatException {
@@ -497,11 +494,25 @@ final class JmsTransportImpl implements JmsTransport {
     return e;
   }
 
-  /** Sends the answer of a request (or look-up) back to the node that waits for it. */
+  /**
+   * Sends the answer of a request (or look-up) back to the node that waits for it. Never throws: it
+   * runs on the thread that completed the request, an object's worker among them; an answer that
+   * cannot be sent is logged, and its future fails at its reply timeout.
+   */
   private void answer(String node, long corr, @Nullable Object value, @Nullable Throwable failure) {
     if (closed.get()) {
       return;
     }
+    try {
+      enqueue(answerMessage(node, corr, value, failure));
+    } catch (RuntimeException e) {
+      LOG.warn(
+          "JMS transport {}: the answer to request {} of {} is lost", this.node, corr, node, e);
+    }
+  }
+
+  private Outbound answerMessage(
+      String node, long corr, @Nullable Object value, @Nullable Throwable failure) {
     Map<String, Object> props = new HashMap<>();
     props.put(WireProperties.NODE, node);
     props.put(WireProperties.CORR, corr);
@@ -529,12 +540,7 @@ final class JmsTransportImpl implements JmsTransport {
       props.put(WireProperties.MSG, WireProperties.MSG_FAILURE);
       props.put(WireProperties.ERROR, text.length() > 1_000 ? text.substring(0, 1_000) : text);
     }
-    try {
-      enqueue(new Outbound(Topic.FUTURE, null, false, body, props));
-    } catch (RuntimeException e) {
-      LOG.warn(
-          "JMS transport {}: the answer to request {} of {} is lost", this.node, corr, node, e);
-    }
+    return new Outbound(Topic.FUTURE, null, false, body, props);
   }
 
   /** An answer to one of this transport's requests or look-ups. */

@@ -1,5 +1,6 @@
 package org.armgals.active;
 
+import java.util.function.BiConsumer;
 import org.jspecify.annotations.Nullable;
 
 /** The envelopes the runtime makes itself: lambda requests, wrapped events, future replies. */
@@ -26,6 +27,49 @@ final class Requests {
         .callWhen(
             s -> processor(s, request).isProcessable(request),
             s -> (R) processor(s, request).answer(request));
+  }
+
+  /**
+   * {@link #ask(ActiveRef, Request)} for a request from another runtime: its outcome goes to {@code
+   * answer}, on the thread that completes it, instead of to a future that the caller would have to
+   * subscribe to after the request is queued (by then a fast servant may have answered, and its
+   * answer would wait for the subscription).
+   */
+  @SuppressWarnings("unchecked")
+  static <R extends @Nullable Object> void ask(
+      Core<?> core,
+      Request<R> request,
+      BiConsumer<? super @Nullable R, ? super @Nullable Throwable> answer) {
+    java.util.Objects.requireNonNull(request, "request");
+    java.util.Objects.requireNonNull(answer, "answer");
+    if (!core.address().equals(request.destination())) {
+      throw new IllegalArgumentException(
+          "request " + request + " is addressed to " + request.destination() + ", not " + core);
+    }
+    ((Core<Object>) core)
+        .request(
+            s -> (R) processor(s, request).answer(request),
+            s -> processor(s, request).isProcessable(request),
+            new Answer<>(answer));
+  }
+
+  /** A {@link Reply} that hands the outcome to a callback. */
+  private record Answer<R extends @Nullable Object>(
+      BiConsumer<? super @Nullable R, ? super @Nullable Throwable> then) implements Reply<R> {
+    @Override
+    public void complete(R value) {
+      then.accept(value, null);
+    }
+
+    @Override
+    public void fail(Throwable cause) {
+      then.accept(null, cause);
+    }
+
+    @Override
+    public void abandon(ActiveException cause) {
+      then.accept(null, cause);
+    }
   }
 
   private static EventProcessor processor(Object servant, Request<?> request) {

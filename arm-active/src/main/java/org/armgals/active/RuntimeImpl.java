@@ -8,6 +8,7 @@ import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.LongAdder;
+import java.util.function.BiConsumer;
 import javax.management.JMException;
 import javax.management.ObjectName;
 import javax.management.StandardMBean;
@@ -139,6 +140,14 @@ final class RuntimeImpl implements ActiveRuntime {
     public <R extends @Nullable Object> FutureValue<R> ask(
         Address destination, Request<R> request) {
       return Requests.ask(target(destination), request);
+    }
+
+    @Override
+    public <R extends @Nullable Object> void ask(
+        Address destination,
+        Request<R> request,
+        BiConsumer<? super @Nullable R, ? super @Nullable Throwable> answer) {
+      Requests.ask(target(destination), request, answer);
     }
 
     private Core<?> target(Address destination) {

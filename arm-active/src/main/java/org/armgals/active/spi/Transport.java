@@ -1,5 +1,6 @@
 package org.armgals.active.spi;
 
+import java.util.function.BiConsumer;
 import org.armgals.active.Address;
 import org.armgals.active.Event;
 import org.armgals.active.FutureValue;
@@ -36,6 +37,24 @@ public interface Transport extends AutoCloseable {
      * @throws org.armgals.active.ObjectStoppedException no such object (stopped or never made)
      */
     <R extends @Nullable Object> FutureValue<R> ask(Address destination, Request<R> request);
+
+    /**
+     * Queues {@code request} to the object at {@code destination}, which names this runtime, and
+     * calls {@code answer} once with its outcome, as {@link
+     * java.util.concurrent.CompletionStage#whenComplete} would: the value and a null failure, or a
+     * null value and the failure (the servant's exception, or an {@link
+     * org.armgals.active.ActiveException} if the request never ran). {@code answer} is in place
+     * before the request is queued, so it runs on the thread that completes the request, at once:
+     * for a transport that sends answers back over the wire, the object's worker sends the answer
+     * as soon as the servant returns. It must not block and should not throw.
+     *
+     * @throws org.armgals.active.ObjectStoppedException no such object (stopped or never made);
+     *     {@code answer} is not called then
+     */
+    <R extends @Nullable Object> void ask(
+        Address destination,
+        Request<R> request,
+        BiConsumer<? super @Nullable R, ? super @Nullable Throwable> answer);
   }
 
   /**
