@@ -34,7 +34,8 @@ import org.slf4j.LoggerFactory;
 /**
  * {@link JmsTransport} on Artemis's Jakarta client. One connection; a sender thread that owns the
  * producing session and batches; per attached runtime a consuming session whose listeners (one at a
- * time, on Artemis's threads) decode and deliver; one session for answers and look-ups.
+ * time, on Artemis's threads) decode and deliver; a session whose synchronous consumer of answers
+ * the threads waiting for them share ({@link AnswerReceiver}); one session for look-ups.
  */
 final class JmsTransportImpl implements JmsTransport {
   private static final Logger LOG = LoggerFactory.getLogger(JmsTransportImpl.class);
@@ -50,7 +51,7 @@ final class JmsTransportImpl implements JmsTransport {
   private final String node = UUID.randomUUID().toString();
   private final ActiveMQConnectionFactory factory;
   private final Connection connection;
-  private final Session answerSession;
+  private final AnswerReceiver answers;
   private final Map<String, Session> runtimes = new ConcurrentHashMap<>();
   private final Map<String, Address> names = new ConcurrentHashMap<>();
   private final Set<JmsSubscription> subscriptions = ConcurrentHashMap.newKeySet();
@@ -83,14 +84,19 @@ final class JmsTransportImpl implements JmsTransport {
         b.user != null ? factory.createConnection(b.user, b.password) : factory.createConnection();
     connection.setExceptionListener(
         e -> LOG.warn("JMS transport {}: connection to {} failed; reconnecting", node, url, e));
-    this.answerSession = connection.createSession(false, Session.AUTO_ACKNOWLEDGE);
-    MessageConsumer answers =
-        answerSession.createConsumer(
-            answerSession.createTopic(topicName(Topic.FUTURE)),
-            WireProperties.NODE + " = " + WireProperties.literal(node));
-    answers.setMessageListener(this::onAnswer);
+    Session answerSession = connection.createSession(false, Session.AUTO_ACKNOWLEDGE);
+    this.answers =
+        new AnswerReceiver(
+            answerSession.createConsumer(
+                answerSession.createTopic(topicName(Topic.FUTURE)),
+                WireProperties.NODE + " = " + WireProperties.literal(node)),
+            this::onAnswer,
+            pending::size,
+            time,
+            node.substring(0, 8));
+    Session lookupSession = connection.createSession(false, Session.AUTO_ACKNOWLEDGE);
     MessageConsumer lookups =
-        answerSession.createConsumer(answerSession.createTopic(topicName(Topic.NAMES)));
+        lookupSession.createConsumer(lookupSession.createTopic(topicName(Topic.NAMES)));
     lookups.setMessageListener(this::onLookup);
     Session producing = connection.createSession(false, Session.AUTO_ACKNOWLEDGE);
     MessageProducer producer = producing.createProducer(null);
@@ -117,9 +123,17 @@ final class JmsTransportImpl implements JmsTransport {
     this.sweeper =
         Executors.newSingleThreadScheduledExecutor(
             r -> Thread.ofPlatform().name("armgals-jms-timeouts").daemon(true).unstarted(r));
-    sweeper.scheduleAtFixedRate(pending::expire, period, period, TimeUnit.MILLISECONDS);
+    sweeper.scheduleAtFixedRate(
+        () -> {
+          pending.expire();
+          answers.nudge();
+        },
+        period,
+        period,
+        TimeUnit.MILLISECONDS);
     sender.start();
     connection.start();
+    answers.start();
   }
 
   static JmsTransport connect(JmsTransport.Builder b) {
@@ -213,7 +227,7 @@ final class JmsTransportImpl implements JmsTransport {
     requireNonNull(request, "request");
     Map<String, Object> props = selectorProperties(request);
     byte[] value = encode(request);
-    ValueFuture<Object> future = ValueFuture.remote(time);
+    ValueFuture<Object> future = ValueFuture.remote(destination.toString(), time, answers);
     long corr = pending.open(future, destination.toString());
     props.put(WireProperties.MSG, WireProperties.MSG_REQUEST);
     props.put(WireProperties.TO, destination.runtime());
@@ -287,6 +301,14 @@ final class JmsTransportImpl implements JmsTransport {
     return connection;
   }
 
+  AnswerReceiver answers() {
+    return answers;
+  }
+
+  int awaitedAnswers() {
+    return pending.size();
+  }
+
   void forget(JmsSubscription s) {
     subscriptions.remove(s);
   }
@@ -356,8 +378,9 @@ final class JmsTransportImpl implements JmsTransport {
     if (here != null) {
       return FutureValue.completed(here);
     }
-    ValueFuture<Object> future = ValueFuture.remote(time);
-    long corr = pending.open(future, "the name service (name '" + name + "')");
+    String service = "the name service (name '" + name + "')";
+    ValueFuture<Object> future = ValueFuture.remote(service, time, answers);
+    long corr = pending.open(future, service);
     Map<String, Object> props = new HashMap<>();
     props.put(WireProperties.MSG, WireProperties.MSG_LOOKUP);
     props.put(WireProperties.NAME, name);
@@ -648,6 +671,7 @@ final class JmsTransportImpl implements JmsTransport {
       s.close();
     }
     pending.abandonAll(new ActiveException("JMS transport " + node + " closed before the answer"));
+    answers.close();
     try {
       connection.close();
     } catch (JMSException e) {

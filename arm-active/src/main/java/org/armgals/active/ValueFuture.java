@@ -66,8 +66,34 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
    */
   private final @Nullable Core<?> completer;
 
-  /** The time of a future a transport completes, whose waiters park at once; null otherwise. */
-  private final @Nullable TimeSource remoteTime;
+  /**
+   * Who receives the answers of a transport's requests and look-ups, so that a waiter can receive
+   * its own (decision 0032).
+   */
+  interface Receiver {
+    /**
+     * Receives answers on the calling thread, its future's and any other, until {@code future} is
+     * completed or {@code deadline} (on the transport's time, if {@code timed}) has passed.
+     *
+     * @return true if the future may be completed or the time run out: the waiter looks again;
+     *     false if the waiter should park, another thread receiving for it (the lead is taken, this
+     *     thread may not lead, or receiving stopped: the transport closed, the connection failed,
+     *     the thread was interrupted and its flag is set again)
+     */
+    boolean lead(ValueFuture<?> future, boolean timed, long deadline);
+
+    /** The future is looked at without waiting: some thread must be receiving. */
+    void observe();
+  }
+
+  /**
+   * Where the answer of a future a transport completes comes from ({@code from}, for messages), the
+   * time its waiters' timeouts are read on, and who receives it (null: whoever completes it).
+   */
+  private record Remote(String from, TimeSource time, @Nullable Receiver receiver) {}
+
+  /** Null unless a transport completes this future; its waiters then park at once. */
+  private final @Nullable Remote remote;
 
   private volatile @Nullable Object result;
   private volatile @Nullable Waiter waiters;
@@ -77,9 +103,9 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
     this(completer, null);
   }
 
-  private ValueFuture(@Nullable Core<?> completer, @Nullable TimeSource remoteTime) {
+  private ValueFuture(@Nullable Core<?> completer, @Nullable Remote remote) {
     this.completer = completer;
-    this.remoteTime = remoteTime;
+    this.remote = remote;
   }
 
   /**
@@ -87,10 +113,18 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
    * waiters park at once: such an answer takes a broker round trip, far longer than the spin, and a
    * waiter spinning for it only takes a core from the threads that carry the request and its answer
    * (measured on 2 cores: p50 of a round trip over netty 470-560 µs spinning, 235-370 µs parking).
-   * Timeouts of {@link #getValue(Duration)} are read from {@code time}.
+   * Timeouts of {@link #getValue(Duration)} are read from {@code time}. A waiter receives the
+   * answer itself through {@code receiver} when it can (decision 0032); a null receiver leaves it
+   * to whoever completes the future. {@code from} names where the answer comes from in failures.
    */
-  static <T extends @Nullable Object> ValueFuture<T> remote(TimeSource time) {
-    return new ValueFuture<>(null, java.util.Objects.requireNonNull(time, "time"));
+  static <T extends @Nullable Object> ValueFuture<T> remote(
+      String from, TimeSource time, @Nullable Receiver receiver) {
+    return new ValueFuture<>(
+        null,
+        new Remote(
+            java.util.Objects.requireNonNull(from, "from"),
+            java.util.Objects.requireNonNull(time, "time"),
+            receiver));
   }
 
   static <T extends @Nullable Object> ValueFuture<T> completed(T value) {
@@ -151,6 +185,18 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
 
   @Override
   public boolean isDone() {
+    if (result != null) {
+      return true;
+    }
+    Remote rm = remote;
+    if (rm != null && rm.receiver() != null) {
+      rm.receiver().observe();
+    }
+    return result != null;
+  }
+
+  /** Whether the future is completed; unlike {@link #isDone}, never a reason to receive. */
+  boolean completed() {
     return result != null;
   }
 
@@ -185,6 +231,10 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
         completeStage(s, r);
       }
     }
+    Remote rm = remote;
+    if (rm != null && rm.receiver() != null && result == null) {
+      rm.receiver().observe();
+    }
     return java.util.Objects.requireNonNull(s).minimalCompletionStage();
   }
 
@@ -198,7 +248,8 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
 
   private String completerName() {
     Core<?> c = completer;
-    return c == null ? "a completed future" : c.address().toString();
+    Remote rm = remote;
+    return c != null ? c.address().toString() : rm != null ? rm.from() : "a completed future";
   }
 
   @SuppressWarnings("unchecked")
@@ -218,12 +269,12 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
     if (r != null) {
       return r;
     }
-    TimeSource remote = remoteTime;
+    Remote rm = remote;
     TimeSource time =
         completer != null
             ? completer.runtime.timeSource()
-            : remote != null ? remote : TimeSource.system();
-    if (remote == null && (r = spin(time)) != null) {
+            : rm != null ? rm.time() : TimeSource.system();
+    if (rm == null && (r = spin(time)) != null) {
       return r;
     }
     Core<?> me = Core.current();
@@ -244,17 +295,22 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
         throw new WaitCycleException(cycle);
       }
     }
-    long deadline = timeoutNanos >= 0 ? time.nanoTime() + timeoutNanos : 0;
+    boolean timed = timeoutNanos >= 0;
+    long deadline = timed ? time.nanoTime() + timeoutNanos : 0;
     Thread self = Thread.currentThread();
     Waiter w = push(self);
+    Receiver receiving = rm == null ? null : rm.receiver();
     Dispatcher.beforeBlock();
     try {
       while ((r = result) == null) {
-        if (timeoutNanos >= 0) {
-          long remaining = deadline - time.nanoTime();
-          if (remaining <= 0) {
-            throw new FutureTimeoutException(completerName(), Duration.ofNanos(timeoutNanos));
-          }
+        long remaining = timed ? deadline - time.nanoTime() : 1;
+        if (remaining <= 0) {
+          throw new FutureTimeoutException(completerName(), Duration.ofNanos(timeoutNanos));
+        }
+        if (receiving != null && receiving.lead(this, timed, deadline)) {
+          continue;
+        }
+        if (timed) {
           LockSupport.parkNanos(this, remaining);
         } else {
           LockSupport.park(this);

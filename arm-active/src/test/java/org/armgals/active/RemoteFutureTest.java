@@ -17,7 +17,7 @@ class RemoteFutureTest {
   @Timeout(30)
   void aWaiterForAnAnswerFromAnotherRuntimeParksAtOnceWithoutSpinning() throws Exception {
     // Frozen time: a waiter that spun until its spin ended would never park.
-    ValueFuture<String> f = ValueFuture.remote(() -> 0L);
+    ValueFuture<String> f = ValueFuture.remote("b/1", () -> 0L, null);
     AtomicReference<String> got = new AtomicReference<>();
     Thread waiter = Thread.ofPlatform().start(() -> got.set(f.getValue()));
     while (waiter.getState() != Thread.State.WAITING || LockSupport.getBlocker(waiter) != f) {
@@ -33,9 +33,10 @@ class RemoteFutureTest {
   void theWaitOfAnAnswerTimesOutOnTheTransportsTime() {
     AtomicLong now = new AtomicLong();
     ValueFuture<String> f =
-        ValueFuture.remote(() -> now.addAndGet(Duration.ofMillis(10).toNanos()));
+        ValueFuture.remote("b/1", () -> now.addAndGet(Duration.ofMillis(10).toNanos()), null);
     assertThatThrownBy(() -> f.getValue(Duration.ofMillis(50)))
-        .isInstanceOf(FutureTimeoutException.class);
+        .isInstanceOf(FutureTimeoutException.class)
+        .hasMessageContaining("b/1");
     assertThat(now.get()).isGreaterThanOrEqualTo(Duration.ofMillis(50).toNanos());
   }
 }
