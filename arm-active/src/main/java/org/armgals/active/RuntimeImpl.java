@@ -133,13 +133,25 @@ final class RuntimeImpl implements ActiveRuntime {
   private final class InboundSide implements Transport.Inbound {
     @Override
     public void deliver(Address destination, Event event) {
-      target(destination).send(event);
+      Core<?> core = target(destination);
+      boolean was = Dispatcher.enterInbound();
+      try {
+        core.send(event);
+      } finally {
+        Dispatcher.leaveInbound(was);
+      }
     }
 
     @Override
     public <R extends @Nullable Object> FutureValue<R> ask(
         Address destination, Request<R> request) {
-      return Requests.ask(target(destination), request);
+      Core<?> core = target(destination);
+      boolean was = Dispatcher.enterInbound();
+      try {
+        return Requests.ask(core, request);
+      } finally {
+        Dispatcher.leaveInbound(was);
+      }
     }
 
     @Override
@@ -147,7 +159,13 @@ final class RuntimeImpl implements ActiveRuntime {
         Address destination,
         Request<R> request,
         BiConsumer<? super @Nullable R, ? super @Nullable Throwable> answer) {
-      Requests.ask(target(destination), request, answer);
+      Core<?> core = target(destination);
+      boolean was = Dispatcher.enterInbound();
+      try {
+        Requests.ask(core, request, answer);
+      } finally {
+        Dispatcher.leaveInbound(was);
+      }
     }
 
     private Core<?> target(Address destination) {
