@@ -10,6 +10,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.Stream;
 import org.apache.activemq.artemis.core.config.impl.ConfigurationImpl;
 import org.apache.activemq.artemis.core.remoting.impl.invm.InVMConnector;
+import org.apache.activemq.artemis.core.server.ActiveMQServer;
 import org.apache.activemq.artemis.core.server.embedded.EmbeddedActiveMQ;
 import org.jspecify.annotations.Nullable;
 import org.slf4j.Logger;
@@ -84,6 +85,11 @@ final class EmbeddedArtemis implements EmbeddedBroker {
     LIVE.incrementAndGet();
     LOG.info("embedded Artemis broker started on {}{}", inVm, netty != null ? " and " + netty : "");
     return new EmbeddedArtemis(server, inVm, netty, dir);
+  }
+
+  /** The broker itself, for tests that watch what reaches it. */
+  ActiveMQServer server() {
+    return server.getActiveMQServer();
   }
 
   @Override

@@ -25,6 +25,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.LongAdder;
+import org.apache.activemq.artemis.api.jms.ActiveMQJMSConstants;
 import org.apache.activemq.artemis.jms.client.ActiveMQConnectionFactory;
 import org.armgals.active.JmsTransport.Topic;
 import org.jspecify.annotations.Nullable;
@@ -39,6 +40,16 @@ import org.slf4j.LoggerFactory;
  */
 final class JmsTransportImpl implements JmsTransport {
   private static final Logger LOG = LoggerFactory.getLogger(JmsTransportImpl.class);
+
+  /**
+   * How the transport's own sessions consume (answers, look-ups, the events and requests of the
+   * attached runtimes): pre-acknowledged, Artemis's mode in which the broker acknowledges a message
+   * as it delivers it and the client sends no acknowledgement back (decision 0034). The messages
+   * are non-persistent on subscriptions that live as long as their consumer, so an acknowledgement
+   * buys nothing; sent, it would go ahead of the answer on the connection.
+   */
+  static final int CONSUMING = ActiveMQJMSConstants.PRE_ACKNOWLEDGE;
+
   private static final int QUEUE = 16_384;
   private static final int LOGGED_REJECTIONS = 20;
 
@@ -84,7 +95,7 @@ final class JmsTransportImpl implements JmsTransport {
         b.user != null ? factory.createConnection(b.user, b.password) : factory.createConnection();
     connection.setExceptionListener(
         e -> LOG.warn("JMS transport {}: connection to {} failed; reconnecting", node, url, e));
-    Session answerSession = connection.createSession(false, Session.AUTO_ACKNOWLEDGE);
+    Session answerSession = connection.createSession(false, CONSUMING);
     this.answers =
         new AnswerReceiver(
             answerSession.createConsumer(
@@ -94,7 +105,7 @@ final class JmsTransportImpl implements JmsTransport {
             pending::size,
             time,
             node.substring(0, 8));
-    Session lookupSession = connection.createSession(false, Session.AUTO_ACKNOWLEDGE);
+    Session lookupSession = connection.createSession(false, CONSUMING);
     MessageConsumer lookups =
         lookupSession.createConsumer(lookupSession.createTopic(topicName(Topic.NAMES)));
     lookups.setMessageListener(this::onLookup);
@@ -179,7 +190,7 @@ final class JmsTransportImpl implements JmsTransport {
     requireNonNull(inbound, "inbound");
     checkOpen();
     try {
-      Session session = connection.createSession(false, Session.AUTO_ACKNOWLEDGE);
+      Session session = connection.createSession(false, CONSUMING);
       if (runtimes.putIfAbsent(runtime, session) != null) {
         session.close();
         throw new IllegalStateException("a runtime named '" + runtime + "' is already attached");

@@ -4,10 +4,18 @@ import static org.armgals.active.JmsFixture.WAIT;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import jakarta.jms.Connection;
+import jakarta.jms.MessageConsumer;
+import jakarta.jms.Session;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.atomic.LongAdder;
+import org.apache.activemq.artemis.api.core.Interceptor;
+import org.apache.activemq.artemis.core.protocol.core.impl.PacketImpl;
+import org.apache.activemq.artemis.core.remoting.server.RemotingService;
+import org.apache.activemq.artemis.jms.client.ActiveMQConnectionFactory;
 import org.armgals.active.JmsFixture.Echo;
 import org.armgals.active.JmsFixture.Explode;
 import org.armgals.active.JmsFixture.Level;
@@ -301,6 +309,56 @@ class JmsTransportTest {
       assertThatThrownBy(() -> remote.call(s -> s.count()))
           .isInstanceOf(UnsupportedOperationException.class)
           .hasMessageContaining("ask(Request)");
+    }
+  }
+
+  /**
+   * The transport's own consumers take their messages pre-acknowledged (decision 0034): events,
+   * requests and answers between two runtimes send the broker no acknowledgement, which would go
+   * ahead of the answer on the connection. A plain consumer acknowledging automatically, on the
+   * same broker, is seen to send one.
+   */
+  @Test
+  void roundTripsAndEventsSendTheBrokerNoAcknowledgement() throws Exception {
+    LongAdder acks = new LongAdder();
+    Interceptor counting =
+        (packet, connection) -> {
+          if (packet.getType() == PacketImpl.SESS_ACKNOWLEDGE
+              || packet.getType() == PacketImpl.SESS_INDIVIDUAL_ACKNOWLEDGE) {
+            acks.increment();
+          }
+          return true;
+        };
+    RemotingService remoting = ((EmbeddedArtemis) broker).server().getRemotingService();
+    remoting.addIncomingInterceptor(counting);
+    try {
+      try (Pair p = new Pair("noacks")) {
+        ActiveObject<Sink> sink = p.b.spawn(new Sink());
+        ActiveRef<Sink> remote = p.a.ref(sink.address());
+        for (int i = 0; i < 100; i++) {
+          remote.send(new Ping(null, sink.address(), i));
+          assertThat(remote.ask(new Sum(null, sink.address(), i, 1)).getValue(WAIT))
+              .isEqualTo(i + 1);
+        }
+        awaitCount(sink, 100);
+        p.tb.register("noacks-sink", sink.address());
+        assertThat(p.ta.lookup("noacks-sink").getValue(WAIT)).isEqualTo(sink.address());
+      }
+      assertThat(acks.sum()).as("acknowledgements from the transports").isZero();
+
+      ActiveMQConnectionFactory plain = new ActiveMQConnectionFactory(broker.inVmUrl());
+      plain.setBlockOnAcknowledge(true); // the acknowledgement is in before receive returns
+      try (Connection c = plain.createConnection()) {
+        Session s = c.createSession(false, Session.AUTO_ACKNOWLEDGE);
+        jakarta.jms.Topic topic = s.createTopic("noacks-control");
+        MessageConsumer consumer = s.createConsumer(topic);
+        c.start();
+        s.createProducer(topic).send(s.createTextMessage("control"));
+        assertThat(consumer.receive(WAIT.toMillis())).isNotNull();
+      }
+      assertThat(acks.sum()).as("acknowledgements from a plain consumer").isPositive();
+    } finally {
+      remoting.removeIncomingInterceptor(counting);
     }
   }
 }
