@@ -48,7 +48,7 @@ final class JmsTransportImpl implements JmsTransport {
    * are non-persistent on subscriptions that live as long as their consumer, so an acknowledgement
    * buys nothing; sent, it would go ahead of the answer on the connection.
    */
-  static final int CONSUMING = ActiveMQJMSConstants.PRE_ACKNOWLEDGE;
+  private static final int CONSUMING = ActiveMQJMSConstants.PRE_ACKNOWLEDGE;
 
   private static final int QUEUE = 16_384;
   private static final int LOGGED_REJECTIONS = 20;
