@@ -17,6 +17,18 @@ public sealed interface ManualClock extends Clock permits ManualClockImpl {
   long step();
 
   /**
+   * Adds {@code gate}, called by every later {@link #step()} on the stepping thread with the
+   * instant about to be released, before the release: the step waits for it to return. A reactive
+   * entity in lock step with its meta (virtual time) waits there for the meta's answers, so that
+   * the instant starts with them, whatever the threads. A gate must not step this clock; an
+   * exception it throws is thrown by the step, before the release. Gates run in the order they were
+   * added.
+   *
+   * @return a handle that removes the gate when closed
+   */
+  AutoCloseable addReleaseGate(java.util.function.LongConsumer gate);
+
+  /**
    * Releases {@code instants} instants, one after the other, as fast as possible.
    *
    * @throws IllegalArgumentException {@code instants} is negative

@@ -14,6 +14,8 @@ final class ManualClockImpl implements ManualClock, ClockSupport.Owner {
   private final ReentrantLock stepping = new ReentrantLock();
   private volatile long instant;
   private volatile boolean closed;
+  private final java.util.List<java.util.function.LongConsumer> gates =
+      new java.util.concurrent.CopyOnWriteArrayList<>();
 
   ManualClockImpl(Duration period) {
     this.periodNanos = ClockSupport.positiveNanos(period);
@@ -23,6 +25,13 @@ final class ManualClockImpl implements ManualClock, ClockSupport.Owner {
   @Override
   public ClockSupport support() {
     return support;
+  }
+
+  @Override
+  public AutoCloseable addReleaseGate(java.util.function.LongConsumer gate) {
+    java.util.Objects.requireNonNull(gate, "gate");
+    gates.add(gate);
+    return () -> gates.remove(gate);
   }
 
   @Override
@@ -40,6 +49,9 @@ final class ManualClockImpl implements ManualClock, ClockSupport.Owner {
         throw new IllegalStateException("manual clock is closed");
       }
       long k = instant + 1;
+      for (java.util.function.LongConsumer gate : gates) {
+        gate.accept(k);
+      }
       instant = k;
       support.release(k);
       support.record(k * periodNanos, 0, 0, false);

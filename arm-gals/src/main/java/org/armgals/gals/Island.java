@@ -9,6 +9,7 @@ import org.armgals.active.TimeSource;
 import org.armgals.kernel.AdaptationPoint;
 import org.armgals.kernel.BehavioralMeta;
 import org.armgals.kernel.Entity;
+import org.armgals.kernel.EntityOptions;
 import org.armgals.kernel.NotificationPolicy;
 import org.armgals.kernel.StructuralMeta;
 
@@ -79,6 +80,28 @@ public interface Island extends AutoCloseable {
    */
   Entity spawn(
       StructuralMeta<?> kind, String name, BehavioralMeta meta, NotificationPolicy notification);
+
+  /**
+   * {@link #spawn(StructuralMeta, String, BehavioralMeta, NotificationPolicy)} with the
+   * notification policy, the {@linkplain EntityOptions#program() program} and the {@linkplain
+   * EntityOptions#lockStep() lock step} of {@code options}; the object's configuration and the
+   * adaptation point are the island's. A robot is such an entity (paper figure 8): its program runs
+   * at each release, and in lock step the island's cycle waits at its adaptation point for the
+   * entity's meta.
+   *
+   * @throws IllegalArgumentException a blank or taken name (in the kernel)
+   * @throws IllegalStateException the island is closed
+   */
+  Entity spawn(StructuralMeta<?> kind, String name, BehavioralMeta meta, EntityOptions options);
+
+  /**
+   * Options for a kernel entity of this island, to refine with {@link
+   * EntityOptions#withNotification}, {@link EntityOptions#withLockStep} or {@link
+   * EntityOptions#withProgram} before {@link #spawn(StructuralMeta, String, BehavioralMeta,
+   * EntityOptions)}: a synchronous object on the island's clock, adapting at its point, notifying
+   * everything, running free.
+   */
+  EntityOptions entityOptions();
 
   /** Its entities, in the order they were spawned. */
   List<ReactiveEntity<?>> entities();

@@ -130,6 +130,35 @@ final class IslandImpl implements Island {
   }
 
   @Override
+  public Entity spawn(
+      StructuralMeta<?> kind, String name, BehavioralMeta meta, EntityOptions options) {
+    requireNonNull(kind, "kind");
+    requireNonNull(name, "name");
+    requireNonNull(meta, "meta");
+    requireNonNull(options, "options");
+    synchronized (entities) {
+      if (closed) {
+        throw new IllegalStateException("island " + this.name + " is closed");
+      }
+      return kind.newEntity(
+          name,
+          meta,
+          new EntityOptions(
+              config,
+              options.notification(),
+              adaptationPoint,
+              options.program(),
+              options.lockStep(),
+              options.lockStepTimeout()));
+    }
+  }
+
+  @Override
+  public EntityOptions entityOptions() {
+    return new EntityOptions(config, NotificationPolicy.all(), adaptationPoint);
+  }
+
+  @Override
   public List<ReactiveEntity<?>> entities() {
     return List.copyOf(entities);
   }

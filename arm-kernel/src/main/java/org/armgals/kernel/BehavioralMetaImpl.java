@@ -51,10 +51,16 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
   boolean handle(Event event) throws Exception {
     switch (event) {
       case Notification n -> notified(n);
+      case Wire.Barrier b -> barrier(b);
+      case Wire.Free f -> free(f);
       case AdaptationAck a -> {
         Model<?> m = models.get(a.sender());
         if (m != null && a.applied() && a.version() > m.appliedVersion) {
           m.appliedVersion = a.version();
+          publish(m);
+        } else if (m != null && !a.applied()) {
+          m.refusedAdaptations++;
+          m.lastRefusal = a.failure();
           publish(m);
         }
       }
@@ -63,6 +69,42 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
       }
     }
     return true;
+  }
+
+  /**
+   * Lock step: the entity has sent every notification of an instant, all handled now; from now on
+   * the requests for it are held back and released in the answer to its next barrier.
+   */
+  private void barrier(Wire.Barrier b) {
+    Model<?> m = models.get(b.sender());
+    List<AdaptationRequest> held = List.of();
+    if (m != null) {
+      m.lockStep = true;
+      held = List.copyOf(m.held);
+      m.held.clear();
+      publish(m);
+    }
+    try {
+      kernel
+          .runtime()
+          .ref(b.replyTo())
+          .send(new Wire.Released(address(), b.replyTo(), b.sender(), b.instant(), held));
+    } catch (ObjectStoppedException e) {
+      LOG.debug("answer to {} not delivered: the entity's kernel is closed", b);
+    }
+  }
+
+  /** The entity runs free again: what was held goes as events. */
+  private void free(Wire.Free f) {
+    Model<?> m = models.get(f.sender());
+    if (m != null) {
+      m.lockStep = false;
+      for (AdaptationRequest r : m.held) {
+        sendTo(m.entity(), r);
+      }
+      m.held.clear();
+      publish(m);
+    }
   }
 
   private void notified(Notification n) throws Exception {
@@ -224,7 +266,12 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
       return OptionalLong.empty();
     }
     long version = ++m.requestedVersion;
-    sendTo(m.entity(), new AdaptationRequest(address(), entity, version, adaptation));
+    AdaptationRequest request = new AdaptationRequest(address(), entity, version, adaptation);
+    if (m.lockStep) {
+      m.held.add(request);
+    } else {
+      sendTo(m.entity(), request);
+    }
     publish(m);
     return OptionalLong.of(version);
   }

@@ -2,17 +2,24 @@ package org.armgals.kernel;
 
 import static java.util.Objects.requireNonNull;
 
+import java.time.Duration;
 import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.armgals.active.ActiveObject;
 import org.armgals.active.Address;
 import org.armgals.active.Event;
 import org.armgals.active.EventProcessor;
+import org.armgals.active.ManualClock;
 import org.armgals.active.ObjectStoppedException;
 import org.armgals.active.ReactiveCycle;
 import org.armgals.active.Request;
+import org.armgals.kernel.spi.InstantContext;
+import org.armgals.kernel.spi.ReactiveProgram;
 import org.armgals.representation.Activation;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.State;
@@ -31,6 +38,11 @@ import org.slf4j.LoggerFactory;
  * <p>Its behavioral meta is either of this runtime ({@link #meta} and its address) or of another
  * one (its address only, decision 0024): notifications go to the address in both cases.
  *
+ * <p>A reactive entity may have a {@link ReactiveProgram}: at each release it takes the events
+ * waiting (stimuli are kept for the program, not dispatched), then, in {@link #onCycle}, applies
+ * the adaptations due at the beginning of the cycle, runs the program, applies those due at the
+ * end, and in lock step sends its meta the instant's barrier (see {@link EntityOptions}).
+ *
  * <p>Threading: everything but the volatile snapshots ({@link #current}, {@link #policy}, {@link
  * #meta}, {@link #metaAddress}, {@link #appliedVersion}) is confined to the entity's object.
  */
@@ -39,6 +51,10 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
 
   private final Activation<E> activation;
   private final AdaptationPoint adaptationPoint;
+  private final @Nullable ReactiveProgram program;
+  private final Duration lockStepTimeout;
+  private final int lockStep;
+  private boolean lockStepping = true;
   private @Nullable EntityImpl<E> owner;
 
   private volatile E current;
@@ -53,10 +69,19 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
   private final ArrayDeque<AdaptationRequest> pending = new ArrayDeque<>();
   private boolean instantBegun;
   private int toLose;
+  private long instant;
+  private final @Nullable LockStepGate gate;
+  private boolean gateRegistered;
+  private final List<Stimulus> stimuli = new ArrayList<>();
+  private final InstantContext instantContext = new Instant();
 
   EntityServant(Activation<E> activation, EntityOptions options) {
     this.activation = requireNonNull(activation, "activation");
     this.adaptationPoint = options.adaptationPoint();
+    this.program = options.program();
+    this.lockStep = options.lockStep();
+    this.lockStepTimeout = options.lockStepTimeout();
+    this.gate = lockStepGate(options);
     this.policy = options.notification();
     this.current = activation.state();
   }
@@ -89,6 +114,25 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
     return appliedVersion;
   }
 
+  /** How many times a lock-step adaptation point gave up waiting for the meta. */
+  long lockStepTimeouts() {
+    LockStepGate g = gate;
+    return g == null ? 0 : g.timeouts();
+  }
+
+  /**
+   * Lock step needs virtual time: the gate waits at the releases of a manual clock. Under any other
+   * clock the entity runs free.
+   */
+  private static @Nullable LockStepGate lockStepGate(EntityOptions options) {
+    if (options.lockStep() == 0 || !(options.config().clock() instanceof ManualClock clock)) {
+      return null;
+    }
+    LockStepGate g = new LockStepGate(options.lockStep(), options.lockStepTimeout());
+    clock.addReleaseGate(g);
+    return g;
+  }
+
   Behaviors<E> behaviors() {
     return activation.behaviors();
   }
@@ -98,8 +142,12 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
     beginInstant();
     switch (event) {
       case Stimulus s -> {
-        for (Step<E> step : activation.dispatch(s.trigger(), s.input())) {
-          stepped(step, s.input());
+        if (program != null) {
+          stimuli.add(s);
+        } else {
+          for (Step<E> step : activation.dispatch(s.trigger(), s.input())) {
+            stepped(step, s.input());
+          }
         }
       }
       case AdaptationRequest r -> {
@@ -142,7 +190,11 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
   }
 
   @Override
-  public void onCycle(long instant) {
+  public void onCycle(long instant) throws Exception {
+    if (program != null) {
+      programCycle(program, instant);
+      return;
+    }
     if (adaptationPoint == AdaptationPoint.END_OF_CYCLE
         || (adaptationPoint == AdaptationPoint.BEGIN_OF_CYCLE && !instantBegun)) {
       applyPending();
@@ -150,17 +202,123 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
     instantBegun = false;
   }
 
+  /**
+   * One instant of an entity with a program: the adaptation point if at the beginning, the program,
+   * the adaptation point if at the end, then the instant's barrier in lock step. A failure of the
+   * program is rethrown after the rest, so that the runtime reports it and the entity goes on.
+   */
+  private void programCycle(ReactiveProgram p, long n) throws Exception {
+    this.instant = n;
+    Exception failure = null;
+    try {
+      if (adaptationPoint == AdaptationPoint.BEGIN_OF_CYCLE) {
+        adaptationPoint(n);
+      }
+      try {
+        p.react(instantContext);
+      } catch (Exception e) {
+        failure = e;
+      }
+      if (adaptationPoint == AdaptationPoint.END_OF_CYCLE) {
+        adaptationPoint(n);
+      }
+      sendBarrier(n);
+    } finally {
+      stimuli.clear();
+      instantBegun = false;
+    }
+    if (failure != null) {
+      throw failure;
+    }
+  }
+
+  /** In lock step, takes the meta's answers due at instant {@code n}; then applies. */
+  private void adaptationPoint(long n) {
+    LockStepGate g = gate;
+    if (g != null && lockStepping) {
+      pending.addAll(g.take(n - lockStep));
+      if (g.free()) {
+        goFree(n);
+      }
+    }
+    applyPending();
+  }
+
+  /**
+   * A release gave up waiting for the meta: the entity runs free from now on (its reactive level
+   * goes on without its meta), tells the meta so, and reports the failure to it.
+   */
+  private void goFree(long n) {
+    lockStepping = false;
+    Address m = metaAddress;
+    LOG.warn(
+        "entity '{}' stops waiting for its meta at instant {}: no answer within {}; it runs free"
+            + " from now on",
+        owner().name(),
+        n,
+        lockStepTimeout);
+    if (m != null) {
+      send(m, new Wire.Free(owner().address(), m));
+    }
+    failed(
+        null,
+        new IllegalStateException(
+            "lock step with the meta lost at instant "
+                + n
+                + ": no answer within "
+                + lockStepTimeout));
+  }
+
+  /** In lock step: tells the meta that every notification up to now has been sent. */
+  private void sendBarrier(long n) {
+    Address m = metaAddress;
+    LockStepGate g = gate;
+    if (g == null || !lockStepping || m == null) {
+      return;
+    }
+    ActiveObject<LockStepDesk> desk = owner().kernel.lockStepDesk();
+    if (!gateRegistered) {
+      desk.send(d -> d.register(owner().address(), g));
+      gateRegistered = true;
+    }
+    g.sent(n);
+    send(m, new Wire.Barrier(owner().address(), m, n, seq, desk.address()));
+  }
+
+  /** Sends {@code event} to the meta at {@code m}, of this runtime or another. */
+  private void send(Address m, Event event) {
+    BehavioralMetaImpl local = meta;
+    try {
+      if (local != null && local.address().equals(m)) {
+        local.object().send(event);
+      } else {
+        owner().kernel.runtime().ref(m).send(event);
+      }
+    } catch (ObjectStoppedException e) {
+      LOG.debug("{} not delivered: its meta is stopped", event);
+    }
+  }
+
   /** The first event of an instant is where a BEGIN_OF_CYCLE entity applies its adaptations. */
   private void beginInstant() {
     if (!instantBegun) {
       instantBegun = true;
-      if (adaptationPoint == AdaptationPoint.BEGIN_OF_CYCLE) {
+      if (adaptationPoint == AdaptationPoint.BEGIN_OF_CYCLE && program == null) {
         applyPending();
       }
     }
   }
 
+  private static final Comparator<AdaptationRequest> BY_VERSION =
+      Comparator.comparingLong(AdaptationRequest::version);
+
   private void applyPending() {
+    if (pending.size() > 1) {
+      List<AdaptationRequest> sorted = new ArrayList<>(pending);
+      sorted.sort(BY_VERSION);
+      pending.clear();
+      pending.addAll(sorted);
+    }
     AdaptationRequest r;
     while ((r = pending.poll()) != null) {
       adapt(r);
@@ -184,6 +342,7 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
   void attach(BehavioralMetaImpl next) {
     meta = next;
     metaAddress = next.address();
+    sendBarrier(instant);
     snapshot();
   }
 
@@ -198,6 +357,7 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
     if (previous != null) {
       previous.deleteBaseLevelEntity(owner());
     }
+    sendBarrier(instant);
     snapshot();
   }
 
@@ -231,6 +391,9 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
       return;
     }
     try {
+      if (program != null) {
+        program.adapt(r.adaptation());
+      }
       switch (r.adaptation()) {
         case Adaptation.SetNotification s -> {
           policy = s.policy();
@@ -360,6 +523,37 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
       }
     } catch (ObjectStoppedException e) {
       LOG.debug("notification {} not delivered: its meta is stopped", n);
+    }
+  }
+
+  /** What the program sees of its instant; used only on the entity's object. */
+  private final class Instant implements InstantContext {
+    @Override
+    public long instant() {
+      return instant;
+    }
+
+    @Override
+    public Entity self() {
+      return owner();
+    }
+
+    @Override
+    public List<Stimulus> stimuli() {
+      return List.copyOf(stimuli);
+    }
+
+    @Override
+    public State state() {
+      return activation.state();
+    }
+
+    @Override
+    public @Nullable Object apply(String behavior, @Nullable Object input) {
+      requireNonNull(behavior, "behavior");
+      Step<E> step = activation.apply(behavior, input);
+      stepped(step, input);
+      return step.result();
     }
   }
 }

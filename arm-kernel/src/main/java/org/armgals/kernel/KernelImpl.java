@@ -8,15 +8,18 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import org.armgals.active.ActiveObject;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
 import org.armgals.active.JmsTransport;
+import org.armgals.active.ObjectConfig;
 import org.armgals.kernel.spi.MetaPolicy;
 import org.armgals.presence.PresenceEvent;
 import org.armgals.presence.spi.PresenceListener;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.State;
 import org.armgals.representation.StateSpace;
+import org.jspecify.annotations.Nullable;
 
 /** The bootstrapped kernel: its four kernel entities and the registry of all its entities. */
 final class KernelImpl implements Kernel {
@@ -285,6 +288,18 @@ final class KernelImpl implements Kernel {
     return remoteEntity(name, names.lookup(name).getValue(), kind);
   }
 
+  private @Nullable ActiveObject<LockStepDesk> desk;
+
+  /** The lock-step desk of this kernel, spawned at first use. */
+  synchronized ActiveObject<LockStepDesk> lockStepDesk() {
+    ActiveObject<LockStepDesk> d = desk;
+    if (d == null) {
+      d = runtime.spawn(new LockStepDesk(), ObjectConfig.asynchronous());
+      desk = d;
+    }
+    return d;
+  }
+
   @Override
   public void close() {
     if (closed) {
@@ -293,6 +308,11 @@ final class KernelImpl implements Kernel {
     closed = true;
     for (EntityImpl<?> e : new ArrayList<>(byAddress.values())) {
       e.object().stop();
+    }
+    synchronized (this) {
+      if (desk != null) {
+        desk.stop();
+      }
     }
     jmx.close();
   }

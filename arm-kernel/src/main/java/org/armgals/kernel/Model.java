@@ -38,6 +38,18 @@ final class Model<S extends State> {
   private long lastAsk;
   private long resyncRequests;
   long requestedVersion;
+
+  /** The requests the entity acknowledged as refused, and the reason of the last. */
+  long refusedAdaptations;
+
+  @org.jspecify.annotations.Nullable String lastRefusal;
+
+  /** Whether the entity runs in lock step with this meta: its requests wait for its barrier. */
+  boolean lockStep;
+
+  /** In lock step, the requests decided since the entity's last barrier. */
+  final java.util.List<AdaptationRequest> held = new java.util.ArrayList<>();
+
   long appliedVersion;
   Filter filter = Filter.ALL;
 
@@ -152,7 +164,10 @@ final class Model<S extends State> {
         appliedVersion,
         governor.suppressed(),
         filter.expression(),
-        lost);
+        lost,
+        refusedAdaptations,
+        lastRefusal,
+        lockStep);
   }
 
   @Override

@@ -26,6 +26,10 @@ import org.jspecify.annotations.Nullable;
  * @param filter the selector its notifications are judged by
  * @param lost whether the entity's runtime was reported lost or gone ({@link
  *     Kernel#presenceListener}) and the model has heard nothing from it since
+ * @param refusedAdaptations how many adaptation requests the entity acknowledged as refused
+ * @param lastRefusal why the entity refused the last one it refused; {@code null} if none
+ * @param lockStep whether the entity runs in lock step with the meta ({@link
+ *     EntityOptions#lockStep()}): its requests are handed over at its barriers
  */
 public record ModelView(
     Address entity,
@@ -39,7 +43,10 @@ public record ModelView(
     long appliedVersion,
     long suppressedAdaptations,
     String filter,
-    boolean lost) {
+    boolean lost,
+    long refusedAdaptations,
+    @Nullable String lastRefusal,
+    boolean lockStep) {
 
   /** Checks and copies the components. */
   public ModelView {

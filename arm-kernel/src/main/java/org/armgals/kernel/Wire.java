@@ -66,6 +66,54 @@ final class Wire {
   }
 
   /**
+   * Lock step ({@link EntityOptions#lockStep()}): the entity ({@code sender}) has sent its meta
+   * ({@code destination}) every notification of its instant {@code instant}, the last numbered
+   * {@code seq}. Once the meta has handled them it sends {@code replyTo} (the entity's kernel's
+   * lock-step desk) a {@link Released} with the adaptation requests it decided since the entity's
+   * previous barrier (held back from the first barrier on instead of sent as events). Sent on the
+   * meta's topic, behind the notifications it closes.
+   */
+  record Barrier(Address sender, Address destination, long instant, long seq, Address replyTo)
+      implements Event {
+    Barrier {
+      requireNonNull(sender, "sender");
+      requireNonNull(destination, "destination");
+      requireNonNull(replyTo, "replyTo");
+    }
+  }
+
+  /**
+   * A meta's answer to the barrier of {@code entity}'s instant {@code instant}: the requests it
+   * decided on that instant's notifications, for the entity's adaptation point {@code k} instants
+   * later.
+   */
+  record Released(
+      Address sender,
+      Address destination,
+      Address entity,
+      long instant,
+      java.util.List<AdaptationRequest> requests)
+      implements Event {
+    Released {
+      requireNonNull(sender, "sender");
+      requireNonNull(destination, "destination");
+      requireNonNull(entity, "entity");
+      requests = java.util.List.copyOf(requests);
+    }
+  }
+
+  /**
+   * A lock-step entity ({@code sender}) stopped waiting for its meta ({@code destination}): the
+   * meta sends it the requests it holds, and later ones, as events again.
+   */
+  record Free(Address sender, Address destination) implements Event {
+    Free {
+      requireNonNull(sender, "sender");
+      requireNonNull(destination, "destination");
+    }
+  }
+
+  /**
    * What an entity says of itself to a handle in another runtime: its whole observed state, its
    * notification policy and its applied version.
    */
@@ -86,7 +134,9 @@ final class Wire {
             ThresholdEvent.class,
             FailureEvent.class,
             ReflectiveRequest.class,
-            AdaptationAck.class)) {
+            AdaptationAck.class,
+            Barrier.class,
+            Free.class)) {
       builder.allow(JmsTransport.Topic.BMETA, toMeta);
     }
     builder.allow(JmsTransport.Topic.SMETA, Modify.class);
@@ -99,6 +149,7 @@ final class Wire {
         Call.class,
         Inspect.class,
         Report.class,
+        Released.class,
         Adaptation.SetNotification.class,
         Adaptation.ApplyBehavior.class,
         NotificationPolicy.class,

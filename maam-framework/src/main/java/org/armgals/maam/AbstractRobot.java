@@ -4,16 +4,25 @@ import static java.util.Objects.requireNonNull;
 
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import org.armgals.active.TimeSource;
 import org.armgals.gals.CycleContext;
 import org.armgals.gals.Island;
 import org.armgals.gals.ReactiveEntity;
 import org.armgals.kernel.AdaptationPoint;
+import org.armgals.kernel.BehavioralMeta;
+import org.armgals.kernel.Entity;
+import org.armgals.kernel.EntityOptions;
+import org.armgals.kernel.Stimulus;
+import org.armgals.kernel.StructuralMeta;
+import org.armgals.kernel.spi.InstantContext;
 import org.armgals.maam.spi.Body;
 import org.armgals.maam.spi.RobotErrorHandler;
+import org.armgals.representation.p.PState;
 import org.jspecify.annotations.Nullable;
 
 /**
@@ -57,6 +66,9 @@ public abstract class AbstractRobot {
   private @Nullable Plan plan;
   private volatile @Nullable ReactiveEntity<AbstractRobot> entity;
   private @Nullable CycleContext<AbstractRobot> context;
+  private volatile @Nullable Entity kernelEntity;
+  private @Nullable InstantContext instant;
+  private volatile @Nullable Thread cycling;
   private long planVersion = -1;
   private long cycles;
   private long errors;
@@ -224,6 +236,11 @@ public abstract class AbstractRobot {
       throw new IllegalStateException(
           "robot " + name + " runs on island " + e.island().name() + ", which releases its cycles");
     }
+    Entity k = kernelEntity;
+    if (k != null) {
+      throw new IllegalStateException(
+          "robot " + name + " is the kernel entity " + k + ", whose clock releases its cycles");
+    }
     if (adaptationPoint == AdaptationPoint.BEGIN_OF_CYCLE) {
       adapt();
     }
@@ -260,8 +277,128 @@ public abstract class AbstractRobot {
    * empty when the robot is stepped by hand. For its modules, during a cycle.
    */
   public final List<Object> received() {
+    InstantContext i = instant;
+    if (i != null) {
+      List<Object> inputs = new ArrayList<>();
+      for (Stimulus s : i.stimuli()) {
+        inputs.add(s.input());
+      }
+      return inputs;
+    }
     CycleContext<AbstractRobot> c = context;
     return c == null ? List.of() : c.inputs();
+  }
+
+  /**
+   * What the robot shows of itself each cycle (paper §3.2: its state, as the procedural
+   * representation reifies it), in the values a notification can carry (strings, booleans, boxed
+   * numbers, lists of those): {@code cycle} (the cycles run), {@code program} (the version of its
+   * program: it moves at each adaptation applied) and {@code errors}. A robot adds its readings,
+   * the outputs of its modules, its energy: override, call this one, and add to its map. Each cycle
+   * must give the same names with values of the same types. Called on the robot's thread, at the
+   * end of each cycle.
+   */
+  protected Map<String, Object> observe() {
+    Map<String, Object> m = new LinkedHashMap<>();
+    m.put("cycle", cycles);
+    m.put("program", meta.version());
+    m.put("errors", errors);
+    return m;
+  }
+
+  /** {@link #observe()} as a state of the robot's {@link RobotKind}. */
+  public final PState observation() {
+    return new PState(observe());
+  }
+
+  /**
+   * Makes this robot a kernel entity of {@code kind} in the synchronous mode on {@code island}
+   * (paper figure 8): its cycle is the entity's program, run at each of the island's releases; each
+   * cycle ends with the kind's {@link RobotKind#CYCLE} behavior applied with {@link #observe()}, so
+   * {@code meta} is notified of it as {@code options}' notification policy says, on its own object,
+   * never on the robot's thread; the kernel's adaptation requests for the robot ({@link
+   * RobotKind#request}) are applied to its program at the island's adaptation point and
+   * acknowledged, applied or refused. In lock step ({@link EntityOptions#withLockStep}, with the
+   * island on a manual clock), the request decided on the notifications of cycle {@code n} is
+   * applied at the adaptation point of cycle {@code n + k}.
+   *
+   * @param kind a kind made by {@link RobotKind#define} for this robot's observation
+   * @param options the notification policy and the lock step; the island sets the rest
+   * @return the robot's entity
+   * @throws IllegalStateException the robot already runs
+   */
+  public final Entity start(
+      Island island, StructuralMeta<PState> kind, BehavioralMeta meta, EntityOptions options) {
+    requireNonNull(island, "island");
+    requireNonNull(kind, "kind");
+    requireNonNull(meta, "meta");
+    requireNonNull(options, "options");
+    synchronized (hosting) {
+      if (entity != null || kernelEntity != null) {
+        throw new IllegalStateException("robot " + name + " already runs");
+      }
+      Entity e = island.spawn(kind, name, meta, options.withProgram(new KernelHost(this)));
+      kernelEntity = e;
+      return e;
+    }
+  }
+
+  /**
+   * The kernel entity the robot is, once {@linkplain #start(Island, StructuralMeta, BehavioralMeta,
+   * EntityOptions) started} as one.
+   */
+  public final Optional<Entity> kernelEntity() {
+    return Optional.ofNullable(kernelEntity);
+  }
+
+  /** One cycle as the program of its kernel entity: the modules, then the reified cycle. */
+  final void kernelCycle(InstantContext now) {
+    instant = now;
+    cycling = Thread.currentThread();
+    try {
+      react();
+      now.apply(RobotKind.CYCLE, observe());
+    } finally {
+      cycling = null;
+      instant = null;
+    }
+  }
+
+  /** Whether the calling thread is inside one of this robot's cycles as a kernel entity. */
+  final boolean inCycle() {
+    return cycling == Thread.currentThread();
+  }
+
+  /**
+   * Applies {@code change} to the program, at the kernel entity's adaptation point.
+   *
+   * @throws IllegalArgumentException the program refuses it; nothing changed
+   */
+  final void applyOrRefuse(Adaptation change) {
+    long before = meta.version();
+    meta.apply(change);
+    if (change instanceof Adaptation.ChangeModule c && plan != null && planVersion == before) {
+      plan.replace(c.replacement());
+      planVersion = meta.version();
+    }
+    applied.add(change);
+    adapted(change);
+  }
+
+  /**
+   * Called after {@code change}, requested by the robot's meta through the kernel, was applied to
+   * its program: on the robot's thread, at its adaptation point, so whatever it records is in step
+   * with the cycles (a run's journal, say). Does nothing by default.
+   */
+  protected void adapted(Adaptation change) {}
+
+  /**
+   * The signals emitted in the last cycle, after suppression, in slot order; for {@link
+   * #observe()}.
+   */
+  protected final List<CycleReport.Emission> emissions() {
+    Plan current = plan;
+    return current == null ? List.of() : current.emissions();
   }
 
   /**
