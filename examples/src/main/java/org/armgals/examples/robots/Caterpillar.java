@@ -6,25 +6,43 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import org.armgals.active.ActiveRuntime;
+import org.armgals.active.ShutdownMode;
 import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
 import org.armgals.examples.sim.Crew;
 import org.armgals.examples.sim.Journal;
 import org.armgals.examples.sim.SimExample;
+import org.armgals.gals.Island;
+import org.armgals.kernel.AdaptationPoint;
+import org.armgals.kernel.BehavioralMeta;
+import org.armgals.kernel.Damping;
+import org.armgals.kernel.Entity;
+import org.armgals.kernel.Kernel;
+import org.armgals.kernel.KernelOptions;
+import org.armgals.kernel.NotificationPolicy;
+import org.armgals.kernel.StructuralMeta;
+import org.armgals.maam.Adaptation;
+import org.armgals.maam.RobotKind;
 import org.armgals.maam.sim.Scene;
 import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;
 import org.armgals.maam.spi.Atom;
 import org.armgals.maam.spi.LegBinding;
+import org.armgals.representation.p.PState;
 
 /**
  * {@code caterpillar}: a chain of atoms bound leg to leg along x crawls forward with a wave gait,
  * the paper's modular robot (§1, §5.4). Every atom runs the same robot program, a {@link
  * CaterpillarSegment}; the head beats the rhythm and each segment passes it to the one behind
  * through their bound legs (neighbour messages), a quarter step later, so a wave runs down the
- * chain. The head's behavioral meta level ({@link CaterpillarMeta}) watches the progress of each
- * step and lengthens the stride while it is too short, through the head, whose rhythm carries the
- * new stride down the chain; each change is told to the journal.
+ * chain. Each segment is a kernel entity of the kind {@code CaterpillarSegment} on an island of its
+ * own (paper figure 8). The head's behavioral meta-entity, {@code bmrobot<head>} with the policy
+ * {@link CaterpillarMeta}, is notified of the head's state every cycle on its own object, watches
+ * the progress of each step and lengthens the stride while it is too short, through the head, whose
+ * rhythm carries the new stride down the chain. It runs in lock step with the head, one cycle
+ * behind: a change decided on cycle {@code n} is applied at the beginning of cycle {@code n + 1},
+ * so runs are reproducible. Each change is told to the journal when the head applies it.
  *
  * <p>{@code --atoms n}: the chain's length, 2 to 8 (default 4).
  */
@@ -92,8 +110,15 @@ public final class Caterpillar implements SimExample {
     List<Integer> ids = sim.atomIds();
     double cycleSeconds = settings.period().toNanos() / 1e9;
     int head = ids.get(ids.size() - 1);
+    ActiveRuntime runtime =
+        ActiveRuntime.builder().name("caterpillar").workers(2).jmx(false).build();
+    Kernel kernel =
+        org.armgals.kernel.StructuralMeta.bootstrap(
+            runtime, KernelOptions.defaults().withTimeSource(sim::timeNanos).withJmx(false));
     List<CaterpillarSegment> segments = new ArrayList<>();
+    List<Island> islands = new ArrayList<>();
     CaterpillarMeta meta = null;
+    StructuralMeta<PState> kind = null;
     for (int i = 0; i < ids.size(); i++) {
       int id = ids.get(i);
       CaterpillarSegment segment =
@@ -103,14 +128,54 @@ public final class Caterpillar implements SimExample {
               sim::timeNanos,
               ids.size() - 1 - i,
               cycleSeconds);
-      if (id == head) {
-        meta = new CaterpillarMeta(segment.builtPacemaker(), journal, id);
-        segment.watchedBy(meta);
+      if (kind == null) {
+        kind = RobotKind.define(kernel, "CaterpillarSegment", segment.observation());
       }
-      sim.setController(id, (atom, cycle) -> segment.cycle());
+      Island island =
+          Island.builder("segment" + id, runtime)
+              .period(settings.period())
+              .adaptationPoint(AdaptationPoint.BEGIN_OF_CYCLE)
+              .timeSource(sim::timeNanos)
+              .jmx(false)
+              .build();
+      if (id == head) {
+        CaterpillarMeta policy = new CaterpillarMeta(segment.builtPacemaker());
+        BehavioralMeta bmrobot = kernel.newBehavioralMeta("bmrobot" + id, policy, Damping.none());
+        segment.start(
+            island,
+            kind,
+            bmrobot,
+            island
+                .entityOptions()
+                .withNotification(NotificationPolicy.statesOnly())
+                .withLockStep(1, LOCK_STEP_TIMEOUT));
+        segment.onAdapted(change -> journal(journal, policy, id, change));
+        meta = policy;
+      } else {
+        segment.start(
+            island,
+            kind,
+            kernel.basicBehavioralMeta(),
+            island.entityOptions().withNotification(NotificationPolicy.quiet()));
+      }
+      sim.setController(id, (atom, cycle) -> island.step());
       segments.add(segment);
+      islands.add(island);
     }
-    return new CaterpillarCrew(sim, segments, requireNonNull(meta, "meta"));
+    return new CaterpillarCrew(
+        sim, segments, requireNonNull(meta, "meta"), islands, kernel, runtime);
+  }
+
+  /** How long a cycle waits for the head's meta level before the head runs free. */
+  private static final Duration LOCK_STEP_TIMEOUT = Duration.ofSeconds(30);
+
+  private static void journal(Journal journal, CaterpillarMeta meta, int atom, Adaptation change) {
+    String[] reason = meta.nextReason();
+    if (reason != null) {
+      journal.adaptation(atom, reason[0], reason[1]);
+    } else {
+      journal.adaptation(atom, change.getClass().getSimpleName(), "asked by the meta level");
+    }
   }
 
   static int atoms(RunSettings settings) {
@@ -128,9 +193,22 @@ public final class Caterpillar implements SimExample {
     return n;
   }
 
-  /** The segments and the head's meta level of one run. */
+  /** The segments, their islands and kernel, and the head's meta level of one run. */
   private record CaterpillarCrew(
-      Simulation sim, List<CaterpillarSegment> segments, CaterpillarMeta meta) implements Crew {
+      Simulation sim,
+      List<CaterpillarSegment> segments,
+      CaterpillarMeta meta,
+      List<Island> islands,
+      Kernel kernel,
+      ActiveRuntime runtime)
+      implements Crew {
+
+    @Override
+    public void close() {
+      islands.forEach(Island::close);
+      kernel.close();
+      runtime.shutdown(ShutdownMode.CANCEL, Duration.ofSeconds(5));
+    }
 
     @Override
     public List<Summary.Entry> figures() {
@@ -141,12 +219,20 @@ public final class Caterpillar implements SimExample {
         }
       }
       long errors = segments.stream().mapToLong(CaterpillarSegment::errors).sum();
+      settle();
       return List.of(
           new Summary.Entry(
               "stride", String.format(Locale.ROOT, "%.2f rad at the end", meta.stride())),
           new Summary.Entry("steps judged by the meta level", Integer.toString(meta.steps())),
           new Summary.Entry("bonds held", bonds + " of " + (sim.atomIds().size() - 1)),
           new Summary.Entry("module errors", Long.toString(errors)));
+    }
+
+    /** Waits until the head's meta has handled every notification sent to it so far. */
+    private void settle() {
+      CaterpillarSegment head = segments.get(segments.size() - 1);
+      Entity entity = head.kernelEntity().orElseThrow();
+      entity.behavioralMeta().orElseThrow().model(entity).getValue();
     }
   }
 }

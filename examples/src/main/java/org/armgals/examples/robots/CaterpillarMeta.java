@@ -1,76 +1,71 @@
 package org.armgals.examples.robots;
 
-import static org.armgals.examples.robots.CaterpillarSignals.BEAT;
-import static org.armgals.examples.robots.CaterpillarSignals.TRAVEL;
-
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.function.Consumer;
+import java.util.Map;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import org.armgals.examples.robots.CaterpillarModules.Pacemaker;
-import org.armgals.examples.robots.CaterpillarSignals.Beat;
-import org.armgals.examples.robots.CaterpillarSignals.Travel;
-import org.armgals.examples.sim.Journal;
+import org.armgals.kernel.Notification;
+import org.armgals.kernel.StateEvent;
+import org.armgals.kernel.spi.MetaContext;
+import org.armgals.kernel.spi.MetaPolicy;
 import org.armgals.maam.Adaptation;
-import org.armgals.maam.BMetaRobot;
-import org.armgals.maam.CycleReport;
+import org.armgals.maam.RobotKind;
 
 /**
- * The head's behavioral meta level (paper §5.4): from each cycle's report it follows the head's
- * beat and position, sums up the progress of every step, and when a step brought less than {@link
- * CaterpillarTuning#SLOW_STEP}, asks for a longer stride: a {@code changeModule} of the head's
- * pacemaker, which the head then passes down the chain with its rhythm. It waits {@link
- * CaterpillarTuning#DWELL_STEPS} steps after each change before judging again, so that a change is
- * judged on steps made with it. Called on the head's thread, once a cycle.
+ * The head's behavioral meta level (paper §5.4, figure 8: {@code bmrobot}), the policy of a kernel
+ * behavioral meta-entity: from the head's state events (its beat's phase and how far it has
+ * travelled, {@link CaterpillarSegment#observe()}) it sums up the progress of every step, and when
+ * a step brought less than {@link CaterpillarTuning#SLOW_STEP}, asks for a longer stride: a {@code
+ * changeModule} of the head's pacemaker, which the head then passes down the chain with its rhythm.
+ * It waits {@link CaterpillarTuning#DWELL_STEPS} steps after each change before judging again, so
+ * that a change is judged on steps made with it.
+ *
+ * <p>Threading: runs on its meta-entity's own object, never on the head's thread; the head applies
+ * its requests at its adaptation point ({@link CaterpillarSegment#adapted}), where the reasons are
+ * taken for the journal. The figures are read once the meta has settled.
  */
-final class CaterpillarMeta implements BMetaRobot {
+final class CaterpillarMeta implements MetaPolicy {
   private final Pacemaker prototype;
-  private final Journal journal;
-  private final int atom;
+  private final ConcurrentLinkedQueue<String[]> reasons = new ConcurrentLinkedQueue<>();
   private final List<String> changes = new ArrayList<>();
-  private double stride;
+  private volatile double stride;
+  private volatile int steps;
   private double lastPhase = -1;
   private double stepStartX = Double.NaN;
   private int stepsSinceChange;
-  private int steps;
 
   /**
    * @param prototype the head's pacemaker as built: the meta level asks for copies of it
-   * @param journal where adaptations are told
-   * @param atom the head's atom id, for the journal
    */
-  CaterpillarMeta(Pacemaker prototype, Journal journal, int atom) {
+  CaterpillarMeta(Pacemaker prototype) {
     this.prototype = prototype;
-    this.journal = journal;
-    this.atom = atom;
     this.stride = prototype.stride();
   }
 
   @Override
-  public void onCycle(CycleReport report, Consumer<Adaptation> requests) {
-    Beat beat = null;
-    Travel travel = null;
-    for (CycleReport.Emission e : report.emissions()) {
-      if (e.port().port().equals(BEAT)) {
-        beat = (Beat) e.signal();
-      } else if (e.port().port().equals(TRAVEL)) {
-        travel = (Travel) e.signal();
-      }
-    }
-    if (beat == null || travel == null) {
+  public void onNotification(MetaContext context, Notification notification) {
+    if (!(notification instanceof StateEvent s)) {
       return;
     }
-    boolean newStep = beat.phase() < lastPhase;
-    lastPhase = beat.phase();
+    Map<String, Object> seen = s.observation();
+    if (!(seen.get(CaterpillarSegment.PHASE) instanceof Double phase)
+        || !(seen.get(CaterpillarSegment.X) instanceof Double x)
+        || phase < 0) {
+      return;
+    }
+    boolean newStep = phase < lastPhase;
+    lastPhase = phase;
     if (!newStep) {
       return;
     }
     if (Double.isNaN(stepStartX)) {
-      stepStartX = travel.x();
+      stepStartX = x;
       return;
     }
-    double progress = travel.x() - stepStartX;
-    stepStartX = travel.x();
+    double progress = x - stepStartX;
+    stepStartX = x;
     steps++;
     stepsSinceChange++;
     if (stepsSinceChange >= CaterpillarTuning.DWELL_STEPS
@@ -78,7 +73,7 @@ final class CaterpillarMeta implements BMetaRobot {
         && stride < CaterpillarTuning.MAX_STRIDE - 1e-9) {
       double longer =
           Math.min(CaterpillarTuning.MAX_STRIDE, stride + CaterpillarTuning.STRIDE_STEP);
-      requests.accept(new Adaptation.ChangeModule(prototype.withStride(longer, beat.phase())));
+      Adaptation change = new Adaptation.ChangeModule(prototype.withStride(longer, phase));
       String what =
           String.format(Locale.ROOT, "stride %.2f -> %.2f rad (pacemaker changed)", stride, longer);
       String why =
@@ -88,11 +83,18 @@ final class CaterpillarMeta implements BMetaRobot {
               steps,
               progress * 100,
               CaterpillarTuning.SLOW_STEP * 100);
-      journal.adaptation(atom, what, why);
-      changes.add(what);
-      stride = longer;
-      stepsSinceChange = 0;
+      if (context.adapt(s.entity(), RobotKind.request(change)).isPresent()) {
+        reasons.add(new String[] {what, why});
+        changes.add(what);
+        stride = longer;
+        stepsSinceChange = 0;
+      }
     }
+  }
+
+  /** What the oldest change not yet applied was, and why it was asked for; null if none. */
+  String[] nextReason() {
+    return reasons.poll();
   }
 
   /** The stride the head beats now, radians. */
@@ -103,10 +105,5 @@ final class CaterpillarMeta implements BMetaRobot {
   /** The steps the meta level judged. */
   int steps() {
     return steps;
-  }
-
-  /** The changes it asked for, in order. */
-  List<String> changes() {
-    return List.copyOf(changes);
   }
 }

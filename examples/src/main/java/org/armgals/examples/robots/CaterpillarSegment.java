@@ -3,7 +3,10 @@ package org.armgals.examples.robots;
 import static org.armgals.examples.robots.CaterpillarSignals.BEAT;
 import static org.armgals.examples.robots.CaterpillarSignals.HEARD;
 import static org.armgals.examples.robots.CaterpillarSignals.STROKE;
+import static org.armgals.examples.robots.CaterpillarSignals.TRAVEL;
 
+import java.util.Map;
+import java.util.function.Consumer;
 import org.armgals.active.TimeSource;
 import org.armgals.examples.robots.CaterpillarModules.Feet;
 import org.armgals.examples.robots.CaterpillarModules.Listen;
@@ -11,8 +14,11 @@ import org.armgals.examples.robots.CaterpillarModules.Odometer;
 import org.armgals.examples.robots.CaterpillarModules.Pacemaker;
 import org.armgals.examples.robots.CaterpillarModules.Relay;
 import org.armgals.examples.robots.CaterpillarModules.Step;
+import org.armgals.examples.robots.CaterpillarSignals.Beat;
+import org.armgals.examples.robots.CaterpillarSignals.Travel;
 import org.armgals.maam.AbstractRobot;
-import org.armgals.maam.BMetaRobot;
+import org.armgals.maam.Adaptation;
+import org.armgals.maam.CycleReport;
 import org.armgals.maam.Schema;
 import org.armgals.maam.spi.Body;
 
@@ -26,13 +32,21 @@ import org.armgals.maam.spi.Body;
  * </pre>
  *
  * The head beats the rhythm; each segment hears it through its front leg's binding and passes it on
- * through its back leg, a quarter step later: a wave runs down the chain. Stepped by the
- * simulation's controller, one cycle per control period.
+ * through its back leg, a quarter step later: a wave runs down the chain. A kernel entity on an
+ * island of its own, which the simulation's controller steps once per control period; it shows its
+ * meta level the phase of its beat and how far it has travelled ({@link #observe()}).
  */
 final class CaterpillarSegment extends AbstractRobot {
   static final String PACEMAKER = "pacemaker";
 
+  /** The observed phase of the beat, in [0, 1); -1 before the first beat. */
+  static final String PHASE = "phase";
+
+  /** The observed distance travelled along x, metres. */
+  static final String X = "x";
+
   private final Pacemaker pacemaker;
+  private Consumer<Adaptation> onAdapted = change -> {};
 
   /**
    * @param fromHead the segment's place from the head, 0 first
@@ -73,8 +87,31 @@ final class CaterpillarSegment extends AbstractRobot {
     return pacemaker;
   }
 
-  /** Lets {@code meta} watch and adapt this segment. */
-  void watchedBy(BMetaRobot meta) {
-    setBehavioralMeta(meta);
+  /** Tells {@code listener} of each change its meta level made, when it is applied. */
+  void onAdapted(Consumer<Adaptation> listener) {
+    this.onAdapted = listener;
+  }
+
+  @Override
+  protected void adapted(Adaptation change) {
+    onAdapted.accept(change);
+  }
+
+  /** What a segment shows its meta level: the robot's own, its beat's phase, its travel. */
+  @Override
+  protected Map<String, Object> observe() {
+    Map<String, Object> m = super.observe();
+    double phase = -1;
+    double x = 0;
+    for (CycleReport.Emission e : emissions()) {
+      if (e.port().port().equals(BEAT) && e.signal() instanceof Beat beat) {
+        phase = beat.phase();
+      } else if (e.port().port().equals(TRAVEL) && e.signal() instanceof Travel travel) {
+        x = travel.x();
+      }
+    }
+    m.put(PHASE, phase);
+    m.put(X, x);
+    return m;
   }
 }

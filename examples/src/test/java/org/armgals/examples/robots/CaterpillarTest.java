@@ -5,19 +5,23 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalLong;
+import org.armgals.active.Address;
 import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
 import org.armgals.examples.robots.CaterpillarModules.Pacemaker;
-import org.armgals.examples.robots.CaterpillarSignals.Beat;
-import org.armgals.examples.robots.CaterpillarSignals.Travel;
 import org.armgals.examples.robots.GaitsTestSupport.TestJournal;
 import org.armgals.examples.sim.Crew;
+import org.armgals.kernel.BehavioralMeta;
+import org.armgals.kernel.Entity;
+import org.armgals.kernel.ModelView;
+import org.armgals.kernel.StateEvent;
+import org.armgals.kernel.spi.MetaContext;
 import org.armgals.maam.Adaptation;
-import org.armgals.maam.CycleReport;
-import org.armgals.maam.PortRef;
 import org.armgals.maam.sim.Simulation;
 import org.armgals.maam.spi.Atom;
 import org.armgals.maam.spi.LegBinding;
@@ -59,18 +63,24 @@ class CaterpillarTest {
   @Test
   void metaLevelLengthensTheStrideOnlyWhileStepsAreShort() {
     Pacemaker pacemaker = new Pacemaker(CaterpillarSegment.PACEMAKER, 0.8, 0.2, 0.25, 0.01, 0);
-    TestJournal journal = new TestJournal(() -> 0);
-    CaterpillarMeta meta = new CaterpillarMeta(pacemaker, journal, 1);
-    List<Adaptation> requests = new ArrayList<>();
+    CaterpillarMeta meta = new CaterpillarMeta(pacemaker);
+    RecordingContext context = new RecordingContext();
     // Six steps of 5 cm: fast enough, nothing to do.
-    feedSteps(meta, requests, 0, 6, 0.05);
-    assertThat(requests).isEmpty();
+    feedSteps(meta, context, 0, 6, 0.05);
+    assertThat(context.requests).isEmpty();
     // Then steps of 1 cm: a longer stride after the dwell, and again, up to the cone's limit.
-    feedSteps(meta, requests, 0.30, 12, 0.01);
-    assertThat(requests).hasSize(3).allMatch(a -> a instanceof Adaptation.ChangeModule);
+    feedSteps(meta, context, 0.30, 12, 0.01);
+    assertThat(context.requests)
+        .hasSize(3)
+        .allMatch(
+            a ->
+                a instanceof org.armgals.kernel.Adaptation.ApplyBehavior b
+                    && b.behavior().equals("changeModule")
+                    && b.input() instanceof Adaptation.ChangeModule);
     assertThat(meta.stride()).isEqualTo(CaterpillarTuning.MAX_STRIDE);
-    assertThat(journal.adaptations).hasSize(3);
-    assertThat(journal.adaptations.get(0)).contains("stride 0.20 -> 0.30", "advanced 1.0 cm");
+    assertThat(meta.nextReason())
+        .satisfies(r -> assertThat(r[0]).contains("stride 0.20 -> 0.30"))
+        .satisfies(r -> assertThat(r[1]).contains("advanced 1.0 cm"));
   }
 
   @Test
@@ -106,26 +116,58 @@ class CaterpillarTest {
   }
 
   private static void feedSteps(
-      CaterpillarMeta meta, List<Adaptation> requests, double x0, int steps, double perStep) {
+      CaterpillarMeta meta, RecordingContext context, double x0, int steps, double perStep) {
     int perStepCycles = 80;
     for (int i = 0; i <= steps * perStepCycles; i++) {
       double phase = (i % perStepCycles) / (double) perStepCycles;
       double x = x0 + perStep * i / perStepCycles;
-      CycleReport report =
-          new CycleReport(
-              "segment1",
-              i,
-              i * 10_000_000L,
-              List.of(
-                  new CycleReport.Emission(
-                      new PortRef(CaterpillarSegment.PACEMAKER, CaterpillarSignals.BEAT),
-                      new Beat(phase, 0.8, meta.stride())),
-                  new CycleReport.Emission(
-                      new PortRef("odometer", CaterpillarSignals.TRAVEL), new Travel(x, 0))),
-              List.of(),
-              List.of(),
-              List.of());
-      meta.onCycle(report, requests::add);
+      Map<String, Object> seen = new LinkedHashMap<>();
+      seen.put("cycle", (long) i);
+      seen.put("program", 1L);
+      seen.put("errors", 0L);
+      seen.put(CaterpillarSegment.PHASE, phase);
+      seen.put(CaterpillarSegment.X, x);
+      meta.onNotification(context, new StateEvent(HEAD, META, context.seq++, "cycle", seen, true));
+    }
+  }
+
+  private static final Address HEAD = new Address("test", 1);
+  private static final Address META = new Address("test", 2);
+
+  /** What the policy asked of its meta-entity: a stand-in for the kernel's, recording requests. */
+  private static final class RecordingContext implements MetaContext {
+    final List<org.armgals.kernel.Adaptation> requests = new ArrayList<>();
+    long seq = 1;
+
+    @Override
+    public BehavioralMeta self() {
+      throw new UnsupportedOperationException("not used by the policy");
+    }
+
+    @Override
+    public Entity entity(Address entity) {
+      throw new UnsupportedOperationException("not used by the policy");
+    }
+
+    @Override
+    public ModelView model(Address entity) {
+      throw new UnsupportedOperationException("not used by the policy");
+    }
+
+    @Override
+    public OptionalLong adapt(Address entity, org.armgals.kernel.Adaptation adaptation) {
+      requests.add(adaptation);
+      return OptionalLong.of(requests.size());
+    }
+
+    @Override
+    public void setFilter(Address entity, String selector) {
+      throw new UnsupportedOperationException("not used by the policy");
+    }
+
+    @Override
+    public long nanoTime() {
+      return 0;
     }
   }
 
