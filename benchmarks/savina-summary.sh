@@ -3,8 +3,9 @@
 #
 # For each workload and implementation, the median ops_per_s of the measured runs (warm-up runs
 # are ignored) and how many runs it is the median of; for mem, the median bytes per idle object.
-# When both implementations are present, the last column is armgals / pekko: for ops_per_s above 1
-# means armgals is faster, for mem below 1 means armgals is smaller.
+# On the line of each other implementation (pekko, yardstick) whose workload armgals also ran, the
+# last column is armgals / that implementation: for ops_per_s above 1 means armgals is faster, for
+# mem below 1 means armgals is smaller.
 set -euo pipefail
 cat "$@" | awk '
   function field(name,   i, kv) {
@@ -31,7 +32,7 @@ cat "$@" | awk '
   $1 == "savina" { add(field("name"), field("impl"), field("ops_per_s")) }
   $1 == "mem" { add("mem", field("impl"), field("bytes_per_idle_object")) }
   END {
-    printf "%-11s %-8s %14s %5s %9s\n", "workload", "impl", "median", "runs", "a/p"
+    printf "%-11s %-10s %14s %5s %10s\n", "workload", "impl", "median", "runs", "armgals/x"
     for (k = 1; k <= keys; k++) {
       name = order[k]
       if (name in done) continue
@@ -42,9 +43,9 @@ cat "$@" | awk '
         if (!(key in count)) continue
         m[impl] = median(key)
         ratio = ""
-        if (impl == "pekko" && ((name SUBSEP "armgals") in count) && m["pekko"] > 0)
-          ratio = sprintf("%.2f", median(name SUBSEP "armgals") / m["pekko"])
-        printf "%-11s %-8s %14.0f %5d %9s\n", name, impl, m[impl], count[key], ratio
+        if (impl != "armgals" && ((name SUBSEP "armgals") in count) && m[impl] > 0)
+          ratio = sprintf("%.2f", median(name SUBSEP "armgals") / m[impl])
+        printf "%-11s %-10s %14.0f %5d %10s\n", name, impl, m[impl], count[key], ratio
       }
     }
   }'

@@ -8,6 +8,7 @@ import org.armgals.active.TimeSource;
 import org.armgals.bench.Args;
 import org.armgals.bench.savina.armgals.ArmgalsSuite;
 import org.armgals.bench.savina.pekko.PekkoSuite;
+import org.armgals.bench.savina.yardstick.YardstickSuite;
 
 /**
  * Runs the Savina-style suite for one implementation and prints one line per run:
@@ -17,11 +18,11 @@ import org.armgals.bench.savina.pekko.PekkoSuite;
  * mem impl=&lt;impl&gt; bytes_per_idle_object=&lt;b&gt;
  * </pre>
  *
- * <p>Usage: {@code Savina [--impl armgals|pekko] [--warmup n] [--warmup-seconds s] [--runs n]
- * [name...]} where a name is one of {@link #WORKLOADS} or {@code mem}; no name runs them all. Each
- * workload is warmed up by at least {@code n} runs (default 2) and at least {@code s} seconds
- * (default 5), so that a workload whose run is short gets as much warm-up time as one whose run is
- * long, then measured {@code --runs} times (default 3). Sizes come from {@link
+ * <p>Usage: {@code Savina [--impl armgals|pekko|yardstick] [--warmup n] [--warmup-seconds s]
+ * [--runs n] [name...]} where a name is one of {@link #WORKLOADS} or {@code mem}; no name runs them
+ * all. Each workload is warmed up by at least {@code n} runs (default 2) and at least {@code s}
+ * seconds (default 5), so that a workload whose run is short gets as much warm-up time as one whose
+ * run is long, then measured {@code --runs} times (default 3). Sizes come from {@link
  * Sizes#fromSystemProperties()}. {@code benchmarks/savina.sh} runs each name in a JVM of its own.
  * Exits with status 1, after the stack trace, if a run fails its check.
  */
@@ -94,9 +95,10 @@ public final class Savina {
     return switch (impl) {
       case "armgals" -> new ArmgalsSuite(sizes);
       case "pekko" -> new PekkoSuite(sizes);
+      case "yardstick" -> new YardstickSuite(sizes);
       default ->
           throw new IllegalArgumentException(
-              "unknown implementation '" + impl + "'; expected armgals or pekko");
+              "unknown implementation '" + impl + "'; expected armgals, pekko or yardstick");
     };
   }
 
