@@ -3,7 +3,8 @@
 #
 #   name        reschedule cycle-overhead jitter (default: all); each prints its own lines:
 #                 gals name=reschedule modules=<n> ms=<x>       n = 1,000, 10,000, 100,000
-#                 gals name=cycle-overhead ratio=<x>            robot cycle / hand-written loop
+#                 gals name=cycle-overhead ratio=<x> min=<a> max=<b> rounds=<n> robot_ns=<r> loop_ns=<l>
+#                   (a MAAM robot's cycle stepped by hand, no island, / a hand-written loop; CPU)
 #                 gals name=jitter impl=<armgals|raw> hz=1000 p50_us=<a> p99_us=<b> max_us=<c>
 #   --seconds   how long each measured part of jitter runs (default 5; warmed up as long again)
 #   --no-build  use benchmarks/target/benchmarks.jar as it is
@@ -26,7 +27,7 @@ while (($#)); do
   case "$1" in
     --seconds) seconds="${2:?--seconds needs a count}"; shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "gals.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) names+=("$1"); shift ;;
   esac
