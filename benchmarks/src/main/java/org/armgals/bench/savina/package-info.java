@@ -4,7 +4,7 @@
  * ({@code .yardstick}), run by {@link org.armgals.bench.savina.Savina} (see {@code
  * benchmarks/savina.sh} and {@code docs/benchmarks.md}).
  *
- * <p>This package holds what both implementations share: the workload sizes, the run protocol, the
+ * <p>This package holds what the implementations share: the workload sizes, the run protocol, the
  * checks and the heap probe, so that no side measures differently.
  */
 @NullMarked
