@@ -53,24 +53,8 @@ final class CycleOverhead {
 
   static void run() throws Exception {
     ConstantBody body = new ConstantBody();
-    BenchRobot robot = new BenchRobot(body);
     List<List<BehaviorModule>> chains = new ArrayList<>();
-    for (int c = 0; c < CHAINS; c++) {
-      List<BehaviorModule> chain =
-          List.of(
-              new BenchModules.Sense("c" + c + ".sense"),
-              new BenchModules.Gain("c" + c + ".g1", 0.9),
-              new BenchModules.Gain("c" + c + ".g2", 1.1),
-              new BenchModules.Gain("c" + c + ".g3", 0.7),
-              new BenchModules.Drive("c" + c + ".drive"));
-      Schema.Builder schema = Schema.builder("chain" + c);
-      chain.forEach(schema::add);
-      for (int i = 0; i + 1 < chain.size(); i++) {
-        schema.wire(chain.get(i), BenchModules.OUT, chain.get(i + 1), BenchModules.IN);
-      }
-      robot.addSchema(schema.build());
-      chains.add(chain);
-    }
+    AbstractRobot robot = robot("bench", body, chains);
     HandLoop loop = new HandLoop(chains, body);
     ThreadMXBean threads = ManagementFactory.getThreadMXBean();
     long[] pair = new long[2];
@@ -124,11 +108,37 @@ final class CycleOverhead {
   }
 
   /**
+   * A robot called {@code name} of 50 modules on {@code body}, in 10 schemas of 5 modules each;
+   * each schema's modules are added to {@code chains} in order. A failure of a module is thrown out
+   * of its cycle.
+   */
+  static AbstractRobot robot(String name, Body body, List<List<BehaviorModule>> chains) {
+    BenchRobot robot = new BenchRobot(name, body);
+    for (int c = 0; c < CHAINS; c++) {
+      List<BehaviorModule> chain =
+          List.of(
+              new BenchModules.Sense("c" + c + ".sense"),
+              new BenchModules.Gain("c" + c + ".g1", 0.9),
+              new BenchModules.Gain("c" + c + ".g2", 1.1),
+              new BenchModules.Gain("c" + c + ".g3", 0.7),
+              new BenchModules.Drive("c" + c + ".drive"));
+      Schema.Builder schema = Schema.builder("chain" + c);
+      chain.forEach(schema::add);
+      for (int i = 0; i + 1 < chain.size(); i++) {
+        schema.wire(chain.get(i), BenchModules.OUT, chain.get(i + 1), BenchModules.IN);
+      }
+      robot.addSchema(schema.build());
+      chains.add(chain);
+    }
+    return robot;
+  }
+
+  /**
    * One round: {@value #CYCLES} cycles of the robot, then as many of the loop; their thread CPU
    * times in {@code pair}. Paired per round: on a shared machine, time spent descheduled would
    * otherwise land on whichever of the two happened to be running.
    */
-  private static void round(BenchRobot robot, HandLoop loop, ThreadMXBean threads, long[] pair)
+  private static void round(AbstractRobot robot, HandLoop loop, ThreadMXBean threads, long[] pair)
       throws Exception {
     long start = threads.getCurrentThreadCpuTime();
     for (int i = 0; i < CYCLES; i++) {
@@ -152,8 +162,8 @@ final class CycleOverhead {
 
   /** The robot. */
   private static final class BenchRobot extends AbstractRobot {
-    BenchRobot(Body body) {
-      super("bench", body, () -> 0L);
+    BenchRobot(String name, Body body) {
+      super(name, body, () -> 0L);
       setErrorHandler(
           (robot, where, error) -> {
             throw new IllegalStateException(where, error);
@@ -214,7 +224,7 @@ final class CycleOverhead {
   }
 
   /** A range sensor that always reads 3 m, and a motor that counts its commands. */
-  private static final class ConstantBody implements Body {
+  static final class ConstantBody implements Body {
     long commands;
     double last;
 
