@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # Runs the GALS and MAAM benchmarks: benchmarks/gals.sh [--seconds s] [--no-build] [name...]
 #
-#   name        reschedule cycle-overhead jitter (default: all); each prints its own lines:
+#   name        reschedule cycle-overhead island-overhead jitter (default: all); each prints:
 #                 gals name=reschedule modules=<n> ms=<x>       n = 1,000, 10,000, 100,000
-#                 gals name=cycle-overhead ratio=<x>            robot cycle / hand-written loop
+#                 gals name=cycle-overhead ratio=<x> min=<a> max=<b> rounds=<n> robot_ns=<r> loop_ns=<l>
+#                   (a MAAM robot's cycle stepped by hand, no island, / a hand-written loop; CPU)
+#                 gals name=island-overhead robots=10 cpu_ratio=<x> min=<a> max=<b> wall_ratio=<w>
+#                   island_cpu_us=<i> hand_cpu_us=<h>  (robots on an island / by hand; process CPU)
 #                 gals name=jitter impl=<armgals|raw> hz=1000 p50_us=<a> p99_us=<b> max_us=<c>
 #   --seconds   how long each measured part of jitter runs (default 5; warmed up as long again)
 #   --no-build  use benchmarks/target/benchmarks.jar as it is
@@ -26,7 +29,7 @@ while (($#)); do
   case "$1" in
     --seconds) seconds="${2:?--seconds needs a count}"; shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "gals.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) names+=("$1"); shift ;;
   esac

@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
-# Runs the Savina-style suite: benchmarks/savina.sh [--impl armgals|pekko|both] [name...]
-#
+# Runs the Savina-style suite: benchmarks/savina.sh [--impl armgals|pekko|yardstick|both|all]
+#                                                   [name...]
 #   name       pingpong counting threadring fjthrput creation futurertt mem (default: all)
-#   --impl     which implementation(s) to run; default armgals
+#   --impl     which implementation(s) to run; default armgals; both = armgals and pekko,
+#              all = armgals, pekko and yardstick (hand-written actors on a fork-join pool)
 #   --warmup n, --warmup-seconds s   warm up each workload by at least n runs (default 2) and
 #              s seconds (default 5); --runs n   measured runs (default 3)
 #   --no-build use benchmarks/target/benchmarks.jar as it is
 #
 # Builds benchmarks/target/benchmarks.jar with the Maven wrapper, then runs each workload of each
-# implementation in a JVM of its own, both implementations of a workload back to back, on a JDK
+# implementation in a JVM of its own, the implementations of a workload back to back, on a JDK
 # >= 21 (JAVA_HOME if it is one, else the newest under /usr/lib/jvm) with the same JVM options
-# for both: SAVINA_JAVA_OPTS, default "-Xms4g -Xmx4g". Sizes are overridden with
+# for all: SAVINA_JAVA_OPTS, default "-Xms4g -Xmx4g". Sizes are overridden with
 # -Dsavina.<key>=<n> in SAVINA_JAVA_OPTS (see Sizes.java). Prints one line per run (see
 # docs/benchmarks.md); exits non-zero if a run fails its check.
 set -euo pipefail
@@ -29,16 +30,19 @@ while (($#)); do
   case "$1" in
     --impl)
       case "${2:-}" in
-        armgals | pekko) impls=("$2") ;;
+        armgals | pekko | yardstick) impls=("$2") ;;
         both) impls=(armgals pekko) ;;
-        *) echo "savina.sh: --impl takes armgals, pekko or both, not '${2:-}'" >&2; exit 2 ;;
+        all) impls=(armgals pekko yardstick) ;;
+        *)
+          echo "savina.sh: --impl takes armgals, pekko, yardstick, both or all, not '${2:-}'" >&2
+          exit 2 ;;
       esac
       shift 2 ;;
     --warmup) warmup="${2:?--warmup needs a count}"; shift 2 ;;
     --warmup-seconds) warmup_seconds="${2:?--warmup-seconds needs a count}"; shift 2 ;;
     --runs) runs="${2:?--runs needs a count}"; shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "savina.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) names+=("$1"); shift ;;
   esac
@@ -61,7 +65,7 @@ if (($(jdk_major "$(dirname "$(dirname "$java")")") >= 23)); then
   opts+=(--sun-misc-unsafe-memory-access=allow)
 fi
 echo "# $("$java" -version 2>&1 | head -1); options: ${opts[*]}; $(nproc) cores" >&2
-# Workload outside, implementation inside: on a shared, noisy machine the two implementations of
+# Workload outside, implementation inside: on a shared, noisy machine the implementations of
 # one workload then run minutes apart at most, under much the same load.
 for name in "${names[@]}"; do
   for impl in "${impls[@]}"; do

@@ -5,6 +5,7 @@ import java.lang.management.ThreadMXBean;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import java.util.Set;
 import org.armgals.maam.AbstractRobot;
 import org.armgals.maam.BehaviorModule;
@@ -21,23 +22,98 @@ import org.armgals.maam.spi.SensorKey;
 import org.jspecify.annotations.Nullable;
 
 /**
- * {@code gals name=cycle-overhead ratio=<x>}: the time of a robot's {@link AbstractRobot#cycle} of
- * 50 modules (10 schemas, each a chain of a perceptor, three reactors and an actuator) against a
- * hand-written loop calling the same module objects in the same order through one-field slots.
- * Rounds alternate the two; the ratio is the median of the rounds' ratios of thread CPU time.
+ * {@code gals name=cycle-overhead ratio=<x> min=<a> max=<b> rounds=<n> robot_ns=<r> loop_ns=<l>}:
+ * the time of a robot's {@link AbstractRobot#cycle} of 50 modules (10 schemas, each a chain of a
+ * perceptor, three reactors and an actuator) against a hand-written loop calling the same module
+ * objects in the same order through one-field slots.
+ *
+ * <p>What it measures is MAAM's own cost per cycle, maam-framework's compiled plan: the robot is
+ * stepped by hand on the measuring thread, not released by an island, so no arm-gals code (no
+ * island, release, entity or trace) runs in it. Both sides call the same modules, which allocate
+ * their signals and read a body; the robot adds, per module, the lookup of its ports, the stamps
+ * that make a signal belong to its cycle, the check of an emitted signal's type and the connectors'
+ * bookkeeping, and per cycle its clock reading, the body's end of cycle and the adaptation point.
+ *
+ * <p>Rounds of {@value #CYCLES} cycles alternate the two, robot first, timed in the measuring
+ * thread's CPU time. The first rounds warm up, until both {@value #WARMUP_ROUNDS} rounds and {@code
+ * -Dgals.cycle.warmup-seconds} (default 5) of wall time have passed: the JIT compiles late on a
+ * busy machine, and the hand-written loop reaches its compiled speed after the robot; then {@value
+ * #ROUNDS} rounds are measured. {@code ratio} is the median of their ratios, {@code min} and {@code
+ * max} the extremes, {@code robot_ns} and {@code loop_ns} the median CPU nanoseconds of one cycle
+ * of each. The ratios of every measured round go to standard error.
  */
 final class CycleOverhead {
 
   private static final int CHAINS = 10;
-  private static final int ROUNDS = 30;
+  private static final int WARMUP_ROUNDS = 15;
+  private static final int ROUNDS = 15;
   private static final int CYCLES = 20_000;
 
   private CycleOverhead() {}
 
   static void run() throws Exception {
     ConstantBody body = new ConstantBody();
-    BenchRobot robot = new BenchRobot(body);
     List<List<BehaviorModule>> chains = new ArrayList<>();
+    AbstractRobot robot = robot("bench", body, chains);
+    HandLoop loop = new HandLoop(chains, body);
+    ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+    long[] pair = new long[2];
+    int warmupSeconds = Integer.getInteger("gals.cycle.warmup-seconds", 5);
+    if (warmupSeconds < 0) {
+      throw new IllegalArgumentException(
+          "gals.cycle.warmup-seconds must be >= 0, was " + warmupSeconds);
+    }
+    long warmupEnd = System.nanoTime() + warmupSeconds * 1_000_000_000L;
+    int warmups = 0;
+    while (warmups < WARMUP_ROUNDS || System.nanoTime() - warmupEnd < 0) {
+      round(robot, loop, threads, pair);
+      warmups++;
+    }
+    double[] ratios = new double[ROUNDS];
+    double[] robotNs = new double[ROUNDS];
+    double[] loopNs = new double[ROUNDS];
+    StringBuilder each = new StringBuilder();
+    for (int r = 0; r < ROUNDS; r++) {
+      round(robot, loop, threads, pair);
+      ratios[r] = (double) pair[0] / pair[1];
+      robotNs[r] = (double) pair[0] / CYCLES;
+      loopNs[r] = (double) pair[1] / CYCLES;
+      each.append(String.format(Locale.ROOT, " %.2f", ratios[r]));
+    }
+    if (body.commands == 0 || robot.errors() != 0) {
+      throw new IllegalStateException("the modules did not run: " + robot.errors() + " errors");
+    }
+    System.err.printf(
+        Locale.ROOT,
+        "# cycle-overhead: AbstractRobot.cycle() stepped by hand (maam-framework's plan, no island)"
+            + " against a hand-written loop over the same %d modules, in the measuring thread's CPU"
+            + " time; %d warm-up rounds, then %d rounds of %d cycles, ratios:%s%n",
+        CHAINS * 5,
+        warmups,
+        ROUNDS,
+        CYCLES,
+        each);
+    double[] sorted = ratios.clone();
+    Arrays.sort(sorted);
+    System.out.printf(
+        Locale.ROOT,
+        "gals name=cycle-overhead ratio=%.2f min=%.2f max=%.2f rounds=%d robot_ns=%.0f"
+            + " loop_ns=%.0f%n",
+        median(ratios),
+        sorted[0],
+        sorted[sorted.length - 1],
+        ROUNDS,
+        median(robotNs),
+        median(loopNs));
+  }
+
+  /**
+   * A robot called {@code name} of 50 modules on {@code body}, in 10 schemas of 5 modules each;
+   * each schema's modules are added to {@code chains} in order. A failure of a module is thrown out
+   * of its cycle.
+   */
+  static AbstractRobot robot(String name, Body body, List<List<BehaviorModule>> chains) {
+    BenchRobot robot = new BenchRobot(name, body);
     for (int c = 0; c < CHAINS; c++) {
       List<BehaviorModule> chain =
           List.of(
@@ -54,46 +130,40 @@ final class CycleOverhead {
       robot.addSchema(schema.build());
       chains.add(chain);
     }
-    HandLoop loop = new HandLoop(chains, body);
-    // Thread CPU time, paired per round: on a shared machine, time spent descheduled would
-    // otherwise land on whichever of the two happened to be running.
-    ThreadMXBean threads = ManagementFactory.getThreadMXBean();
-    double[] ratios = new double[ROUNDS];
-    long robotTotal = 0;
-    long loopTotal = 0;
-    for (int round = 0; round < ROUNDS; round++) {
-      long start = threads.getCurrentThreadCpuTime();
-      for (int i = 0; i < CYCLES; i++) {
-        robot.cycle();
-      }
-      long middle = threads.getCurrentThreadCpuTime();
-      for (int i = 0; i < CYCLES; i++) {
-        loop.cycle();
-      }
-      long end = threads.getCurrentThreadCpuTime();
-      ratios[round] = (double) (middle - start) / (end - middle);
-      if (round >= ROUNDS / 2) {
-        robotTotal += middle - start;
-        loopTotal += end - middle;
-      }
+    return robot;
+  }
+
+  /**
+   * One round: {@value #CYCLES} cycles of the robot, then as many of the loop; their thread CPU
+   * times in {@code pair}. Paired per round: on a shared machine, time spent descheduled would
+   * otherwise land on whichever of the two happened to be running.
+   */
+  private static void round(AbstractRobot robot, HandLoop loop, ThreadMXBean threads, long[] pair)
+      throws Exception {
+    long start = threads.getCurrentThreadCpuTime();
+    for (int i = 0; i < CYCLES; i++) {
+      robot.cycle();
     }
-    if (body.commands == 0 || robot.errors() != 0) {
-      throw new IllegalStateException("the modules did not run: " + robot.errors() + " errors");
+    long middle = threads.getCurrentThreadCpuTime();
+    for (int i = 0; i < CYCLES; i++) {
+      loop.cycle();
     }
-    // The first half warms up (the JIT is slow on a busy machine).
-    double[] measured = Arrays.copyOfRange(ratios, ROUNDS / 2, ROUNDS);
-    Arrays.sort(measured);
-    long cycles = (long) CYCLES * measured.length;
-    System.err.printf(
-        "# cycle-overhead: %d modules, robot %d ns/cycle, hand-written loop %d ns/cycle (CPU)%n",
-        CHAINS * 5, robotTotal / cycles, loopTotal / cycles);
-    System.out.printf("gals name=cycle-overhead ratio=%.2f%n", measured[measured.length / 2]);
+    long end = threads.getCurrentThreadCpuTime();
+    pair[0] = middle - start;
+    pair[1] = end - middle;
+  }
+
+  private static double median(double[] values) {
+    double[] sorted = values.clone();
+    Arrays.sort(sorted);
+    int n = sorted.length;
+    return n % 2 == 1 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
   }
 
   /** The robot. */
   private static final class BenchRobot extends AbstractRobot {
-    BenchRobot(Body body) {
-      super("bench", body, () -> 0L);
+    BenchRobot(String name, Body body) {
+      super(name, body, () -> 0L);
       setErrorHandler(
           (robot, where, error) -> {
             throw new IllegalStateException(where, error);
@@ -154,7 +224,7 @@ final class CycleOverhead {
   }
 
   /** A range sensor that always reads 3 m, and a motor that counts its commands. */
-  private static final class ConstantBody implements Body {
+  static final class ConstantBody implements Body {
     long commands;
     double last;
 

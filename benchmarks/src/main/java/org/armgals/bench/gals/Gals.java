@@ -23,6 +23,7 @@ public final class Gals {
   static {
     BENCHMARKS.put("reschedule", Reschedule::run);
     BENCHMARKS.put("cycle-overhead", CycleOverhead::run);
+    BENCHMARKS.put("island-overhead", IslandOverhead::run);
     BENCHMARKS.put("jitter", JitterBenchmark::run);
   }
 

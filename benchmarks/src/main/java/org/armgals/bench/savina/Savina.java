@@ -1,27 +1,36 @@
 package org.armgals.bench.savina;
 
 import java.io.PrintStream;
+import java.lang.management.ManagementFactory;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.LongSupplier;
 import org.armgals.active.TimeSource;
 import org.armgals.bench.Args;
 import org.armgals.bench.savina.armgals.ArmgalsSuite;
 import org.armgals.bench.savina.pekko.PekkoSuite;
+import org.armgals.bench.savina.yardstick.YardstickSuite;
 
 /**
  * Runs the Savina-style suite for one implementation and prints one line per run:
  *
  * <pre>
- * [warmup ]savina name=&lt;bench&gt; impl=&lt;impl&gt; ops=&lt;n&gt; seconds=&lt;t&gt; ops_per_s=&lt;x&gt;
+ * [warmup ]savina name=&lt;bench&gt; impl=&lt;impl&gt; ops=&lt;n&gt; seconds=&lt;t&gt; ops_per_s=&lt;x&gt; cpu_s=&lt;c&gt; cpu_s_per_m_ops=&lt;y&gt;
  * mem impl=&lt;impl&gt; bytes_per_idle_object=&lt;b&gt;
  * </pre>
  *
- * <p>Usage: {@code Savina [--impl armgals|pekko] [--warmup n] [--warmup-seconds s] [--runs n]
- * [name...]} where a name is one of {@link #WORKLOADS} or {@code mem}; no name runs them all. Each
- * workload is warmed up by at least {@code n} runs (default 2) and at least {@code s} seconds
- * (default 5), so that a workload whose run is short gets as much warm-up time as one whose run is
- * long, then measured {@code --runs} times (default 3). Sizes come from {@link
+ * <p>{@code cpu_s} is the CPU time the whole process (every thread: the runtime's, the caller's,
+ * the collector's and the compiler's) spent during the timed part of the run, from {@link
+ * com.sun.management.OperatingSystemMXBean#getProcessCpuTime()}; {@code cpu_s_per_m_ops} is that
+ * per million operations (equal to the CPU microseconds per operation). A CPU idle-spinning thread
+ * shows there, not in {@code ops_per_s}.
+ *
+ * <p>Usage: {@code Savina [--impl armgals|pekko|yardstick] [--warmup n] [--warmup-seconds s]
+ * [--runs n] [name...]} where a name is one of {@link #WORKLOADS} or {@code mem}; no name runs them
+ * all. Each workload is warmed up by at least {@code n} runs (default 2) and at least {@code s}
+ * seconds (default 5), so that a workload whose run is short gets as much warm-up time as one whose
+ * run is long, then measured {@code --runs} times (default 3). Sizes come from {@link
  * Sizes#fromSystemProperties()}. {@code benchmarks/savina.sh} runs each name in a JVM of its own.
  * Exits with status 1, after the stack trace, if a run fails its check.
  */
@@ -36,12 +45,14 @@ public final class Savina {
   private final Suite suite;
   private final Sizes sizes;
   private final TimeSource time;
+  private final LongSupplier cpuNanos;
   private final PrintStream out;
 
-  Savina(Suite suite, Sizes sizes, TimeSource time, PrintStream out) {
+  Savina(Suite suite, Sizes sizes, TimeSource time, LongSupplier cpuNanos, PrintStream out) {
     this.suite = suite;
     this.sizes = sizes;
     this.time = time;
+    this.cpuNanos = cpuNanos;
     this.out = out;
   }
 
@@ -73,7 +84,7 @@ public final class Savina {
     Sizes sizes = Sizes.fromSystemProperties();
     Plan plan = new Plan(warmup, warmupSeconds * 1_000_000_000L, runs);
     try (Suite suite = suite(impl, sizes)) {
-      Savina savina = new Savina(suite, sizes, TimeSource.system(), System.out);
+      Savina savina = new Savina(suite, sizes, TimeSource.system(), processCpuNanos(), System.out);
       for (String name : names) {
         if (name.equals(MEM)) {
           savina.measureMemory();
@@ -90,13 +101,27 @@ public final class Savina {
     System.exit(0);
   }
 
+  /**
+   * The process's CPU time in nanoseconds, summed over all its threads.
+   *
+   * @throws IllegalStateException the JVM does not measure it
+   */
+  private static LongSupplier processCpuNanos() {
+    com.sun.management.OperatingSystemMXBean os =
+        ManagementFactory.getPlatformMXBean(com.sun.management.OperatingSystemMXBean.class);
+    Check.state(
+        os != null && os.getProcessCpuTime() >= 0, "this JVM does not measure the process's CPU");
+    return os::getProcessCpuTime;
+  }
+
   private static Suite suite(String impl, Sizes sizes) {
     return switch (impl) {
       case "armgals" -> new ArmgalsSuite(sizes);
       case "pekko" -> new PekkoSuite(sizes);
+      case "yardstick" -> new YardstickSuite(sizes);
       default ->
           throw new IllegalArgumentException(
-              "unknown implementation '" + impl + "'; expected armgals or pekko");
+              "unknown implementation '" + impl + "'; expected armgals, pekko or yardstick");
     };
   }
 
@@ -115,18 +140,23 @@ public final class Savina {
   private void runOnce(String name, Workload workload, String prefix) throws Exception {
     try (Trial trial = workload.prepare()) {
       System.gc();
+      long cpuStart = cpuNanos.getAsLong();
       long start = time.nanoTime();
       long ops = trial.run();
       double seconds = (time.nanoTime() - start) / 1e9;
+      double cpuSeconds = (cpuNanos.getAsLong() - cpuStart) / 1e9;
       out.printf(
           Locale.ROOT,
-          "%ssavina name=%s impl=%s ops=%d seconds=%.3f ops_per_s=%.0f%n",
+          "%ssavina name=%s impl=%s ops=%d seconds=%.3f ops_per_s=%.0f cpu_s=%.3f"
+              + " cpu_s_per_m_ops=%.3f%n",
           prefix,
           name,
           suite.impl(),
           ops,
           seconds,
-          ops / seconds);
+          ops / seconds,
+          cpuSeconds,
+          cpuSeconds / ops * 1e6);
     }
   }
 

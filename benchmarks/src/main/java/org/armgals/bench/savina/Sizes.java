@@ -2,9 +2,9 @@ package org.armgals.bench.savina;
 
 /**
  * The sizes of the workloads, the same for every implementation. Each default is chosen so that a
- * run takes one to five seconds on a two-core machine for both implementations where their speeds
+ * run takes one to five seconds on a two-core machine for armgals and Pekko where their speeds
  * allow it; where they differ too much (creation, futurertt) the faster one runs shorter. {@code
- * -Dsavina.<key>=<n>} overrides one (give both implementations the same value when comparing).
+ * -Dsavina.<key>=<n>} overrides one (give every implementation the same value when comparing).
  *
  * @param pingpongMessages one-way messages bounced between the two players (even)
  * @param countingIncrements increments sent to the counter

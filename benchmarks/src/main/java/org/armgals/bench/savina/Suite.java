@@ -1,12 +1,13 @@
 package org.armgals.bench.savina;
 
 /**
- * The workloads of one implementation, sharing one runtime (an armgals runtime or a Pekko actor
- * system) for the life of the JVM. Not thread-safe: the harness uses it from its main thread.
+ * The workloads of one implementation, sharing one runtime (an armgals runtime, a Pekko actor
+ * system or the yardstick's pool) for the life of the JVM. Not thread-safe: the harness uses it
+ * from its main thread.
  */
 public interface Suite extends AutoCloseable {
 
-  /** The implementation's name as printed: {@code armgals} or {@code pekko}. */
+  /** The implementation's name as printed: {@code armgals}, {@code pekko} or {@code yardstick}. */
   String impl();
 
   /**

@@ -1,10 +1,11 @@
 /**
- * A Savina-style suite: the same workloads written once with armgals ({@code .armgals}) and once
- * with Apache Pekko typed actors ({@code .pekko}), run by {@link org.armgals.bench.savina.Savina}
- * (see {@code benchmarks/savina.sh} and {@code docs/benchmarks.md}).
+ * A Savina-style suite: the same workloads written three times, with armgals ({@code .armgals}),
+ * with Apache Pekko typed actors ({@code .pekko}) and with hand-written actors on a fork-join pool
+ * ({@code .yardstick}), run by {@link org.armgals.bench.savina.Savina} (see {@code
+ * benchmarks/savina.sh} and {@code docs/benchmarks.md}).
  *
- * <p>This package holds what both implementations share: the workload sizes, the run protocol, the
- * checks and the heap probe, so that neither side measures differently.
+ * <p>This package holds what the implementations share: the workload sizes, the run protocol, the
+ * checks and the heap probe, so that no side measures differently.
  */
 @NullMarked
 package org.armgals.bench.savina;
