@@ -28,8 +28,14 @@ import javax.tools.JavaCompiler;
 import javax.tools.JavaFileObject;
 import javax.tools.StandardJavaFileManager;
 import javax.tools.ToolProvider;
+import javax.xml.parsers.DocumentBuilderFactory;
+import javax.xml.xpath.XPath;
+import javax.xml.xpath.XPathConstants;
+import javax.xml.xpath.XPathFactory;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.w3c.dom.Document;
+import org.w3c.dom.NodeList;
 
 /** {@code armgals new} writes a robot skeleton that compiles as written, and refuses bad names. */
 class NewCommandTest {
@@ -91,6 +97,34 @@ class NewCommandTest {
     } catch (ReflectiveOperationException e) {
       throw new AssertionError("the skeleton's example cannot be made", e);
     }
+  }
+
+  @Test
+  void theSkeletonsPomParsesAndPinsTheReleaseAndTheRequirements() throws Exception {
+    Path target = dir.resolve("mybot");
+    NewCommand.write("mybot", target, "9.9.9-TEST");
+
+    DocumentBuilderFactory factory = DocumentBuilderFactory.newInstance();
+    factory.setNamespaceAware(false);
+    factory.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
+    Document pom = factory.newDocumentBuilder().parse(target.resolve("pom.xml").toFile());
+    XPath xpath = XPathFactory.newInstance().newXPath();
+
+    assertThat(xpath.evaluate("/project/properties/maven.compiler.release", pom)).isEqualTo("21");
+    assertThat(xpath.evaluate("/project/artifactId", pom)).isEqualTo("mybot");
+    String enforcer = "//plugin[artifactId='maven-enforcer-plugin']";
+    assertThat(xpath.evaluate(enforcer + "//requireMavenVersion/version", pom)).isEqualTo("[3.9,)");
+    assertThat(xpath.evaluate(enforcer + "//requireJavaVersion/version", pom)).isEqualTo("[21,)");
+    assertThat(xpath.evaluate(enforcer + "//requireJavaVersion/message", pom))
+        .contains("JDK 21 or later");
+    NodeList plugins = (NodeList) xpath.evaluate("//plugin", pom, XPathConstants.NODESET);
+    for (int i = 0; i < plugins.getLength(); i++) {
+      assertThat(xpath.evaluate("version", plugins.item(i)))
+          .as("the version of %s", xpath.evaluate("artifactId", plugins.item(i)))
+          .matches("\\d+(\\.\\d+)+");
+    }
+    assertThat(xpath.evaluate("//plugin[artifactId='maven-compiler-plugin']/version", pom))
+        .isNotEmpty();
   }
 
   @Test
