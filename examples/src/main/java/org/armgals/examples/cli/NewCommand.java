@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Properties;
 import java.util.concurrent.Callable;
 import java.util.regex.Matcher;
@@ -31,6 +32,9 @@ import picocli.CommandLine.Parameters;
     description = "Writes the skeleton of a new robot, ready to compile and run.")
 final class NewCommand implements Callable<Integer> {
   static final Pattern NAME = Pattern.compile("[a-z][a-z0-9]{0,39}");
+
+  /** What the root POM of an armgals checkout says it is. */
+  private static final String PARENT_ARTIFACT = "<artifactId>armgals-parent</artifactId>";
 
   private static final Pattern PLACEHOLDER = Pattern.compile("\\$\\{(\\w+)}");
 
@@ -92,6 +96,17 @@ final class NewCommand implements Callable<Integer> {
       throw new UsageException(
           target + " already exists; give another name, or another place with --dir");
     }
+    checkout(target)
+        .ifPresent(
+            root -> {
+              throw new UsageException(
+                  target
+                      + " is inside the armgals checkout "
+                      + root
+                      + ", whose build would take it for one of its own; write it elsewhere,"
+                      + " say --dir "
+                      + root.resolveSibling(name));
+            });
     String upper = name.substring(0, 1).toUpperCase(Locale.ROOT) + name.substring(1);
     Map<String, String> values =
         Map.of("name", name, "Name", upper, "package", name, "version", version);
@@ -113,6 +128,22 @@ final class NewCommand implements Callable<Integer> {
     } catch (IOException e) {
       throw new UncheckedIOException("cannot write the skeleton in " + target, e);
     }
+  }
+
+  /** The armgals checkout {@code target} would be in, if any: the nearest with armgals' POM. */
+  static Optional<Path> checkout(Path target) {
+    for (Path dir = target.toAbsolutePath().normalize(); dir != null; dir = dir.getParent()) {
+      Path pom = dir.resolve("pom.xml");
+      try {
+        if (Files.isRegularFile(pom)
+            && Files.readString(pom, StandardCharsets.UTF_8).contains(PARENT_ARTIFACT)) {
+          return Optional.of(dir);
+        }
+      } catch (IOException e) {
+        // An unreadable POM is not armgals' own: the checkout's is readable, it was built from.
+      }
+    }
+    return Optional.empty();
   }
 
   private static void check(String name) {

@@ -151,6 +151,31 @@ class NewCommandTest {
   }
 
   @Test
+  void aSkeletonInsideAnArmgalsCheckoutIsRefusedWritingNothing() throws IOException {
+    Path checkout = Files.createDirectories(dir.resolve("armgals"));
+    Files.writeString(
+        checkout.resolve("pom.xml"),
+        "<project>\n  <groupId>org.armgals</groupId>\n"
+            + "  <artifactId>armgals-parent</artifactId>\n</project>\n");
+    Path deeper = Files.createDirectories(checkout.resolve("examples/src"));
+
+    for (Path target : List.of(checkout.resolve("mybot"), deeper.resolve("mybot"))) {
+      assertThatThrownBy(() -> NewCommand.write("mybot", target, "1"))
+          .as(target.toString())
+          .isInstanceOf(UsageException.class)
+          .hasMessage(
+              target
+                  + " is inside the armgals checkout "
+                  + checkout
+                  + ", whose build would take it for one of its own; write it elsewhere, say"
+                  + " --dir "
+                  + dir.resolve("mybot"));
+      assertThat(target).doesNotExist();
+    }
+    assertThat(NewCommand.write("mybot", dir.resolve("mybot"), "1")).isNotEmpty();
+  }
+
+  @Test
   void placeholdersMavenOwnsAreLeftAlone() {
     assertThat(NewCommand.fill("${name}: ${project.version} ${other}", Map.of("name", "bot")))
         .isEqualTo("bot: ${project.version} ${other}");
