@@ -49,9 +49,14 @@ final class DistributedAtomProcess implements AutoCloseable {
             "-Xmx128m",
             "-XX:TieredStopAtLevel=1",
             "-XX:+UseSerialGC",
+            "--enable-native-access=ALL-UNNAMED",
             "-cp",
             System.getProperty("java.class.path"),
             DistributedAtomMain.class.getName());
+    if (Runtime.version().feature() >= 23) {
+      // netty's Unsafe allocation, which JDK 24 and later warn about on first use
+      command.command().add(1, "--sun-misc-unsafe-memory-access=allow");
+    }
     command.command().addAll(args);
     if (!user.isEmpty()) {
       command.environment().put(DistributedAtomMain.USER, user);
