@@ -17,6 +17,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import javax.lang.model.SourceVersion;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -31,6 +32,8 @@ import picocli.CommandLine.Parameters;
     name = "new",
     description = "Writes the skeleton of a new robot, ready to compile and run.")
 final class NewCommand implements Callable<Integer> {
+  @Mixin HelpOption help = new HelpOption();
+
   static final Pattern NAME = Pattern.compile("[a-z][a-z0-9]{0,39}");
 
   /** What the root POM of an armgals checkout says it is. */
