@@ -69,6 +69,18 @@ class LauncherTest {
     Files.setLastModifiedTime(root.resolve(file), FileTime.from(BUILT.plusSeconds(60)));
   }
 
+  @Test
+  void theJvmIsGivenTheOptionsThatKeepNettyAndArtemisQuietOnItsVersion() throws Exception {
+    assertThat(launch())
+        .startsWith("java --enable-native-access=ALL-UNNAMED -jar ")
+        .doesNotContain("unsafe");
+
+    Files.writeString(jdk.resolve("release"), "JAVA_VERSION=\"25.0.1\"\n");
+    assertThat(launch())
+        .startsWith(
+            "java --enable-native-access=ALL-UNNAMED --sun-misc-unsafe-memory-access=allow -jar ");
+  }
+
   /** Runs the launcher with {@code list}; answers what it printed, both streams. */
   private String launch() throws IOException, InterruptedException {
     ProcessBuilder command = new ProcessBuilder("bash", root.resolve("armgals").toString(), "list");
