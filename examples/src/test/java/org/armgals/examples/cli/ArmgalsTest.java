@@ -208,7 +208,7 @@ class ArmgalsTest {
     assertThat(r.status()).as(r.err()).isZero();
     assertThat(r.out())
         .contains("wrote the robot 'bot' in " + target)
-        .contains("mvn -q compile exec:java");
+        .contains("./mvnw -q verify exec:java");
     assertThat(target.resolve("src/main/java/bot/BotRobot.java")).exists();
   }
 

@@ -54,7 +54,11 @@ class NewCommandTest {
             "src/main/java/mybot/Signals.java",
             "src/main/java/mybot/Modules.java",
             "src/main/java/mybot/MybotRobot.java",
-            "src/main/java/mybot/MybotExample.java");
+            "src/main/java/mybot/MybotExample.java",
+            "src/test/java/mybot/MybotRobotTest.java",
+            "mvnw",
+            "mvnw.cmd",
+            ".mvn/wrapper/maven-wrapper.properties");
     String pom = Files.readString(target.resolve("pom.xml"), StandardCharsets.UTF_8);
     assertThat(pom)
         .contains("<armgals.version>9.9.9-TEST</armgals.version>")
@@ -63,7 +67,7 @@ class NewCommandTest {
         .contains("<artifactId>maam-sim</artifactId>")
         .contains("<version>${armgals.version}</version>")
         .contains("<mainClass>mybot.MybotExample</mainClass>");
-    for (Path file : written) {
+    for (Path file : written.subList(0, 7)) {
       assertThat(Files.readString(file, StandardCharsets.UTF_8))
           .as("%s has no placeholder left but Maven's", file)
           .doesNotContainPattern("\\$\\{(name|Name|package|version)}")
@@ -73,7 +77,46 @@ class NewCommandTest {
     assertThat(compile(written.stream().filter(p -> p.toString().endsWith(".java")).toList()))
         .isEmpty();
     assertThat(dir.resolve("classes/mybot/MybotExample.class")).exists();
+    assertThat(dir.resolve("classes/mybot/MybotRobotTest.class")).exists();
     assertThat(runBriefly()).contains(new Summary.Entry("robot cycles", "10"));
+  }
+
+  @Test
+  void theSkeletonHasTheMavenWrapperOfArmgalsExecutable() throws IOException {
+    Path target = dir.resolve("mybot");
+    NewCommand.write("mybot", target, "9.9.9-TEST");
+    Path checkout = Path.of("").toAbsolutePath().getParent();
+
+    for (String file : List.of("mvnw", "mvnw.cmd", ".mvn/wrapper/maven-wrapper.properties")) {
+      assertThat(target.resolve(file)).as(file).hasSameBinaryContentAs(checkout.resolve(file));
+    }
+    assertThat(Files.isExecutable(target.resolve("mvnw"))).isTrue();
+  }
+
+  @Test
+  void theSkeletonsSourcesAreFormattedAsArmgalsOwnWhateverTheNamesLength() throws Exception {
+    List<String> sources = new ArrayList<>();
+    for (String name : List.of("bot", "mybot", "abcdefghijklmnopqrst")) {
+      NewCommand.write(name, dir.resolve(name), "9.9.9-TEST").stream()
+          .filter(p -> p.toString().endsWith(".java"))
+          .forEach(p -> sources.add(p.toString()));
+    }
+    Path formatter = Path.of(System.getProperty("armgals.formatter", "(armgals.formatter unset)"));
+    assertThat(formatter).as("google-java-format, as the build fetches it").isRegularFile();
+
+    List<String> command = new ArrayList<>();
+    command.addAll(
+        List.of(
+            Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+            "-jar",
+            formatter.toString(),
+            "--dry-run"));
+    command.addAll(sources);
+    Process format = new ProcessBuilder(command).redirectErrorStream(true).start();
+    String unformatted = new String(format.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+
+    assertThat(format.waitFor()).as(unformatted).isZero();
+    assertThat(unformatted).as("the files google-java-format would change").isEmpty();
   }
 
   /** Runs the compiled skeleton's example for ten cycles; answers its summary. */
@@ -134,7 +177,7 @@ class NewCommandTest {
 
   @Test
   void badNamesAndExistingDirectoriesAreRefusedWritingNothing() throws IOException {
-    for (String bad : List.of("MyBot", "my-bot", "9bot", "", "class")) {
+    for (String bad : List.of("MyBot", "my-bot", "9bot", "", "class", "abcdefghijklmnopqrstu")) {
       assertThatThrownBy(() -> NewCommand.write(bad, dir.resolve("x"), "1"))
           .as(bad)
           .isInstanceOf(UsageException.class)
