@@ -33,8 +33,13 @@ import org.armgals.maam.sim.spi.Pacer;
  *   <li>{@value Outputs#START} and {@value Outputs#END}: the molecule at the start and at the end.
  * </ul>
  *
- * The summary: distance covered by the molecule's centre (on the ground plane), its speed in atom
- * diameters per second (an atom's diameter is tip to tip, legs straight), the energy used, the
+ * It writes them into a {@link Staging} directory inside the output directory and moves them into
+ * place when it ends, so that a run that fails leaves the previous run's files as they were. On
+ * Ctrl-C ({@link Interruption}) it stops after the cycle it is in, keeps what it has, the trace
+ * ending with a line that marks it incomplete ({@link Replay#incomplete}), and exits 130.
+ *
+ * <p>The summary: distance covered by the molecule's centre (on the ground plane), its speed in
+ * atom diameters per second (an atom's diameter is tip to tip, legs straight), the energy used, the
  * adaptations made and why, and the missed cycles (paced to real time: cycles that ended later than
  * a period after their time; plus those the crew reports).
  */
