@@ -13,8 +13,11 @@ import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.FileSystemException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.NotDirectoryException;
+import java.util.ArrayList;
 import java.util.Collections;
+import java.util.Comparator;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -124,13 +127,51 @@ public final class Armgals implements Runnable {
     return e.getCommandLine().getCommandSpec().qualifiedName() + " --help";
   }
 
-  /** What the user may have meant by an unknown option or command, if picocli has an idea. */
+  /**
+   * What the user may have meant by an unknown option or command: the option or command at most two
+   * edits (a letter added, dropped, changed, or two swapped) from the first unmatched word, or else
+   * picocli's suggestion, if there is one.
+   */
   private static String suggestion(CommandLine.ParameterException e) {
-    if (e instanceof CommandLine.UnmatchedArgumentException unmatched
-        && !unmatched.getSuggestions().isEmpty()) {
-      return "; did you mean '" + unmatched.getSuggestions().get(0) + "'?";
+    if (!(e instanceof CommandLine.UnmatchedArgumentException unmatched)) {
+      return "";
     }
-    return "";
+    List<String> names = new ArrayList<>();
+    String word = unmatched.getUnmatched().isEmpty() ? "" : unmatched.getUnmatched().get(0);
+    CommandSpec spec = e.getCommandLine().getCommandSpec();
+    if (word.startsWith("-")) {
+      spec.options().forEach(o -> names.addAll(List.of(o.names())));
+    } else {
+      names.addAll(spec.subcommands().keySet());
+    }
+    return names.stream()
+        .filter(name -> edits(word, name) <= 2)
+        .min(Comparator.comparingInt(name -> edits(word, name)))
+        .or(() -> unmatched.getSuggestions().stream().findFirst())
+        .map(name -> "; did you mean '" + name + "'?")
+        .orElse("");
+  }
+
+  /** The optimal string alignment distance between {@code a} and {@code b}. */
+  static int edits(String a, String b) {
+    int[][] d = new int[a.length() + 1][b.length() + 1];
+    for (int i = 0; i <= a.length(); i++) {
+      for (int j = 0; j <= b.length(); j++) {
+        if (i == 0 || j == 0) {
+          d[i][j] = i + j;
+          continue;
+        }
+        int cost = a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1;
+        d[i][j] = Math.min(Math.min(d[i - 1][j] + 1, d[i][j - 1] + 1), d[i - 1][j - 1] + cost);
+        if (i > 1
+            && j > 1
+            && a.charAt(i - 1) == b.charAt(j - 2)
+            && a.charAt(i - 2) == b.charAt(j - 1)) {
+          d[i][j] = Math.min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+      }
+    }
+    return d[a.length()][b.length()];
   }
 
   /**

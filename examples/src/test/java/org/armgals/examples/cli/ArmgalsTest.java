@@ -282,7 +282,21 @@ class ArmgalsTest {
     Result command = run("lst");
     assertThat(command.status()).isEqualTo(Armgals.USAGE);
     assertThat(command.err()).contains("did you mean 'list'?");
+    assertThat(run("rnu", "recorder").err()).contains("did you mean 'run'?");
+    assertThat(run("run", "recorder", "--sede", "3").err()).contains("did you mean '--seed'?");
+    assertThat(run("fly").err()).doesNotContain("did you mean");
     assertThat(recording.runs).isEmpty();
+  }
+
+  @Test
+  void editsCountsLettersAddedDroppedChangedAndSwapped() {
+    assertThat(Armgals.edits("run", "run")).isZero();
+    assertThat(Armgals.edits("rnu", "run")).isEqualTo(1);
+    assertThat(Armgals.edits("--cycle", "--cycles")).isEqualTo(1);
+    assertThat(Armgals.edits("lst", "list")).isEqualTo(1);
+    assertThat(Armgals.edits("replya", "replay")).isEqualTo(1);
+    assertThat(Armgals.edits("fly", "list")).isEqualTo(4);
+    assertThat(Armgals.edits("", "new")).isEqualTo(3);
   }
 
   @Test
