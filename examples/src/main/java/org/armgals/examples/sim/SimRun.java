@@ -128,20 +128,25 @@ final class SimRun {
           trace.write(Replay.incomplete(ran, cycles));
         }
       } catch (IOException e) {
-        throw new UncheckedIOException("cannot write the trace " + tracePath, e);
+        throw new UncheckedIOException(
+            "cannot write the trace " + settings.out().resolve(TRACE), e);
       }
-      Outputs.write(example.name(), recording, staging.dir());
+      if (ran > 0) { // interrupted before its first cycle, a run has nothing to draw
+        Outputs.write(example.name(), recording, staging.dir());
+      }
       staging.keep();
       if (ran < cycles) {
         out.printf(
             Locale.ROOT,
             "%sarmgals %s: interrupted after %d of %d cycles (%.2f s simulated); the trace up to"
-                + " there (marked incomplete) and the pictures are in %s%n",
+                + " there (marked incomplete)%s %s in %s%n",
             terminal ? System.lineSeparator() : "",
             example.name(),
             ran,
             cycles,
             recording.seconds(),
+            ran > 0 ? " and the pictures" : "",
+            ran > 0 ? "are" : "is",
             settings.out());
         out.flush();
         throw new RunInterrupted(example.name() + " was interrupted after " + ran + " cycles");

@@ -438,6 +438,34 @@ class SimRunTest {
   }
 
   @Test
+  void aRunInterruptedBeforeItsFirstCycleKeepsItsHeaderMarkedIncompleteAndNoPictures()
+      throws IOException {
+    ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+    try (Interruption interruption = Interruption.manual();
+        PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8)) {
+      interruption.request();
+      assertThatThrownBy(() -> SimRun.run(example, cycles(20), out, false, () -> 0, interruption))
+          .isInstanceOf(RunInterrupted.class);
+    }
+
+    List<String> trace = Files.readAllLines(dir.resolve(SimRun.TRACE), StandardCharsets.UTF_8);
+    assertThat(trace).hasSize(2);
+    assertThat(trace.get(1)).contains("\"cycles\":0,\"of\":20");
+    assertThat(dir.resolve(Outputs.TRAJECTORY)).doesNotExist();
+    assertThat(bytes.toString(StandardCharsets.UTF_8))
+        .contains("interrupted after 0 of 20 cycles (0.00 s simulated); the trace up to there")
+        .contains("(marked incomplete) is in " + dir);
+    assertThat(
+            Replay.replay(
+                    example,
+                    Replay.Header.parse(trace.get(0)),
+                    Files.readString(dir.resolve(SimRun.TRACE), StandardCharsets.UTF_8))
+                .line())
+        .startsWith(
+            "reproduced exactly up to where the trace stops (the run was interrupted): 0 of");
+  }
+
+  @Test
   void aTraceCutInTheMiddleOfALineReplaysUpToItsLastWholeLine() throws IOException {
     run(cycles(12), false, new AtomicLong());
     String text = Files.readString(dir.resolve(SimRun.TRACE), StandardCharsets.UTF_8);
