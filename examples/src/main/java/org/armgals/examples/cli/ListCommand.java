@@ -2,10 +2,13 @@ package org.armgals.examples.cli;
 
 import java.io.PrintStream;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 
 /** {@code armgals list}: the examples, one line each. */
 @Command(name = "list", description = "Lists the example robots, one line each.")
 final class ListCommand implements Runnable {
+  @Mixin HelpOption help = new HelpOption();
+
   private final Catalog catalog;
   private final PrintStream out;
 

@@ -7,37 +7,53 @@ import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermission;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Properties;
+import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import javax.lang.model.SourceVersion;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /**
  * {@code armgals new <name>}: writes the skeleton of a robot, a small Maven project whose sources
  * follow the four steps of §5.4 (signals, modules, a robot class that registers its schemas, and a
- * simulated example with a {@code main}) and that compiles as written. The templates are resources
- * next to this class ({@code skeleton/*.tmpl}); their placeholders are {@code ${name}}, {@code
- * ${Name}}, {@code ${package}} and {@code ${version}}, the version of armgals that writes them.
+ * simulated example with a {@code main}), with a JUnit 5 test that the robot crawls and armgals'
+ * own Maven wrapper; it builds, passes its test and runs as written, formatted as armgals' sources
+ * are. The templates are resources next to this class ({@code skeleton/*.tmpl}); their placeholders
+ * are {@code ${name}}, {@code ${Name}}, {@code ${package}}, {@code ${version}} (the version of
+ * armgals that writes them) and {@code ${junit}}. It refuses to write inside an armgals checkout,
+ * whose build takes every {@code src} directory below it for its own.
  */
 @Command(
     name = "new",
     description = "Writes the skeleton of a new robot, ready to compile and run.")
 final class NewCommand implements Callable<Integer> {
-  static final Pattern NAME = Pattern.compile("[a-z][a-z0-9]{0,39}");
+  @Mixin HelpOption help = new HelpOption();
+
+  static final Pattern NAME = Pattern.compile("[a-z][a-z0-9]{0,19}");
+
+  /** What the root POM of an armgals checkout says it is. */
+  private static final String PARENT_ARTIFACT = "<artifactId>armgals-parent</artifactId>";
 
   private static final Pattern PLACEHOLDER = Pattern.compile("\\$\\{(\\w+)}");
 
   /** The lines that mark the regions docs/user-guide.md shows; a skeleton goes without them. */
   private static final Pattern TAG_LINE = Pattern.compile("(?m)^[ \\t]*// (tag|end)::\\w+\\[]\\R");
 
-  /** Template, and where it goes: {@code JAVA} for the package's source directory. */
+  /**
+   * Template, and where it goes: {@code JAVA/} for the package's source directory, {@code TEST/}
+   * for its test directory.
+   */
   private static final List<String[]> FILES =
       List.of(
           new String[] {"pom.xml.tmpl", "pom.xml"},
@@ -45,7 +61,12 @@ final class NewCommand implements Callable<Integer> {
           new String[] {"Signals.java.tmpl", "JAVA/Signals.java"},
           new String[] {"Modules.java.tmpl", "JAVA/Modules.java"},
           new String[] {"Robot.java.tmpl", "JAVA/${Name}Robot.java"},
-          new String[] {"Example.java.tmpl", "JAVA/${Name}Example.java"});
+          new String[] {"Example.java.tmpl", "JAVA/${Name}Example.java"},
+          new String[] {"RobotTest.java.tmpl", "TEST/${Name}RobotTest.java"});
+
+  /** The Maven wrapper, copied as it is (the build puts armgals' own beside the templates). */
+  private static final List<String> WRAPPER =
+      List.of("mvnw", "mvnw.cmd", ".mvn/wrapper/maven-wrapper.properties");
 
   private final PrintStream out;
 
@@ -74,9 +95,10 @@ final class NewCommand implements Callable<Integer> {
       out.println("  " + target.relativize(file));
     }
     out.println(
-        "run it: cd "
+        "build, test and run it: cd "
             + target
-            + " && mvn -q compile exec:java   (see its README.md; docs/user-guide.md of armgals)");
+            + " && ./mvnw -q verify exec:java   (see its README.md; docs/user-guide.md of"
+            + " armgals)");
     return 0;
   }
 
@@ -92,21 +114,56 @@ final class NewCommand implements Callable<Integer> {
       throw new UsageException(
           target + " already exists; give another name, or another place with --dir");
     }
+    checkout(target)
+        .ifPresent(
+            root -> {
+              throw new UsageException(
+                  target
+                      + " is inside the armgals checkout "
+                      + root
+                      + ", whose build would take it for one of its own; write it elsewhere,"
+                      + " say --dir "
+                      + root.resolveSibling(name));
+            });
     String upper = name.substring(0, 1).toUpperCase(Locale.ROOT) + name.substring(1);
     Map<String, String> values =
-        Map.of("name", name, "Name", upper, "package", name, "version", version);
+        Map.of(
+            "name",
+            name,
+            "Name",
+            upper,
+            "package",
+            name,
+            "version",
+            version,
+            "junit",
+            built("junit"));
     Path sources = target.resolve("src/main/java").resolve(name);
+    Path tests = target.resolve("src/test/java").resolve(name);
     try {
       Files.createDirectories(sources);
+      Files.createDirectories(tests);
       List<Path> written = new java.util.ArrayList<>();
       for (String[] file : FILES) {
         String place = fill(file[1], values);
         Path path =
             place.startsWith("JAVA/")
                 ? sources.resolve(place.substring("JAVA/".length()))
-                : target.resolve(place);
-        String text = TAG_LINE.matcher(template(file[0])).replaceAll("");
+                : place.startsWith("TEST/")
+                    ? tests.resolve(place.substring("TEST/".length()))
+                    : target.resolve(place);
+        String text =
+            TAG_LINE.matcher(new String(template(file[0]), StandardCharsets.UTF_8)).replaceAll("");
         Files.writeString(path, fill(text, values), StandardCharsets.UTF_8);
+        written.add(path);
+      }
+      for (String file : WRAPPER) {
+        Path path = target.resolve(file);
+        Files.createDirectories(path.getParent());
+        Files.write(path, template("wrapper/" + file));
+        if (file.equals("mvnw")) {
+          executable(path);
+        }
         written.add(path);
       }
       return List.copyOf(written);
@@ -115,12 +172,28 @@ final class NewCommand implements Callable<Integer> {
     }
   }
 
+  /** The armgals checkout {@code target} would be in, if any: the nearest with armgals' POM. */
+  static Optional<Path> checkout(Path target) {
+    for (Path dir = target.toAbsolutePath().normalize(); dir != null; dir = dir.getParent()) {
+      Path pom = dir.resolve("pom.xml");
+      try {
+        if (Files.isRegularFile(pom)
+            && Files.readString(pom, StandardCharsets.UTF_8).contains(PARENT_ARTIFACT)) {
+          return Optional.of(dir);
+        }
+      } catch (IOException e) {
+        // An unreadable POM is not armgals' own: the checkout's is readable, it was built from.
+      }
+    }
+    return Optional.empty();
+  }
+
   private static void check(String name) {
     if (!NAME.matcher(name).matches()) {
       throw new UsageException(
           "'"
               + name
-              + "' is not a robot name: a lower-case letter, then up to 39 lower-case letters or"
+              + "' is not a robot name: a lower-case letter, then up to 19 lower-case letters or"
               + " digits (it names the robot, its Java package and its directory)");
     }
     if (SourceVersion.isKeyword(name)) {
@@ -130,6 +203,29 @@ final class NewCommand implements Callable<Integer> {
 
   /** The version of armgals, as the build wrote it into {@code version.properties}. */
   static String version() {
+    return built("version");
+  }
+
+  /** Makes {@code file} executable by whoever may read it, where the file system says so. */
+  private static void executable(Path file) throws IOException {
+    if (Files.getFileStore(file).supportsFileAttributeView("posix")) {
+      Set<PosixFilePermission> permissions = new HashSet<>(Files.getPosixFilePermissions(file));
+      permissions.add(PosixFilePermission.OWNER_EXECUTE);
+      if (permissions.contains(PosixFilePermission.GROUP_READ)) {
+        permissions.add(PosixFilePermission.GROUP_EXECUTE);
+      }
+      if (permissions.contains(PosixFilePermission.OTHERS_READ)) {
+        permissions.add(PosixFilePermission.OTHERS_EXECUTE);
+      }
+      Files.setPosixFilePermissions(file, permissions);
+    }
+  }
+
+  /**
+   * A version the build wrote into {@code version.properties}: {@code version}, armgals' own, or
+   * {@code junit}, the JUnit a skeleton's test runs on.
+   */
+  static String built(String key) {
     Properties properties = new Properties();
     try (InputStream in = NewCommand.class.getResourceAsStream("version.properties")) {
       if (in == null) {
@@ -139,19 +235,20 @@ final class NewCommand implements Callable<Integer> {
     } catch (IOException e) {
       throw new UncheckedIOException("cannot read version.properties", e);
     }
-    String version = properties.getProperty("version", "");
+    String version = properties.getProperty(key, "");
     if (version.isEmpty() || version.contains("${")) {
-      throw new IllegalStateException("version.properties was not filled in by the build");
+      throw new IllegalStateException(
+          "version.properties was not filled in by the build: no " + key);
     }
     return version;
   }
 
-  private static String template(String file) throws IOException {
+  private static byte[] template(String file) throws IOException {
     try (InputStream in = NewCommand.class.getResourceAsStream("skeleton/" + file)) {
       if (in == null) {
         throw new IllegalStateException("the template skeleton/" + file + " is missing");
       }
-      return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+      return in.readAllBytes();
     }
   }
 

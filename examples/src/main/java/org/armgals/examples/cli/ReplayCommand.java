@@ -13,6 +13,7 @@ import java.util.concurrent.Callable;
 import org.armgals.examples.sim.Replay;
 import org.armgals.examples.sim.SimExample;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Parameters;
 
 /**
@@ -23,6 +24,8 @@ import picocli.CommandLine.Parameters;
     name = "replay",
     description = "Re-runs the run that wrote a trace and says whether it reproduces it exactly.")
 final class ReplayCommand implements Callable<Integer> {
+  @Mixin HelpOption help = new HelpOption();
+
   private final Catalog catalog;
   private final PrintStream out;
 
@@ -69,7 +72,7 @@ final class ReplayCommand implements Callable<Integer> {
         header.seed());
     Replay.Verdict verdict = Replay.replay(simulated, header, text);
     out.println(verdict.line());
-    return verdict instanceof Replay.Reproduced ? 0 : Armgals.FAILED;
+    return verdict instanceof Replay.Differs ? Armgals.FAILED : 0;
   }
 
   private static String read(Path trace) {

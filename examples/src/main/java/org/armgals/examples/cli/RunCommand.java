@@ -1,6 +1,7 @@
 package org.armgals.examples.cli;
 
 import java.io.PrintStream;
+import java.math.BigDecimal;
 import java.net.URI;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -8,14 +9,23 @@ import java.util.Optional;
 import java.util.OptionalLong;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /** {@code armgals run <example>}: runs one example and prints its summary. */
 @Command(name = "run", description = "Runs an example robot and prints a summary of its run.")
 final class RunCommand implements Callable<Integer> {
+  @Mixin HelpOption help = new HelpOption();
+
   private final Catalog catalog;
   private final PrintStream out;
+
+  /** The longest control period: an hour. */
+  static final long MAX_PERIOD_MS = 3_600_000;
+
+  /** The longest run: what {@link Long#MAX_VALUE} nanoseconds hold, in whole seconds. */
+  static final long MAX_SECONDS = Long.MAX_VALUE / 1_000_000_000L;
 
   @Parameters(index = "0", paramLabel = "<example>", description = "the example, as listed")
   String name = "";
@@ -72,6 +82,7 @@ final class RunCommand implements Callable<Integer> {
                 () ->
                     new UsageException(
                         "no example named '" + name + "'; 'armgals list' shows them"));
+    check();
     RunSettings settings =
         new RunSettings(
             cycles == null ? OptionalLong.empty() : OptionalLong.of(cycles),
@@ -92,10 +103,47 @@ final class RunCommand implements Callable<Integer> {
     return 0;
   }
 
-  private static Duration simulated(double seconds) {
-    if (!(seconds > 0) || Double.isInfinite(seconds)) {
-      throw new IllegalArgumentException("--seconds must be positive and finite, not " + seconds);
+  /** Checks each option's range, naming the option as given and its value. */
+  private void check() {
+    if (cycles != null && cycles < 1) {
+      throw new IllegalArgumentException("--cycles must be at least 1, was " + cycles);
     }
-    return Duration.ofNanos(Math.round(seconds * 1e9));
+    if (periodMs <= 0) {
+      throw new IllegalArgumentException("--period-ms must be positive, was " + periodMs);
+    }
+    if (periodMs > MAX_PERIOD_MS) {
+      throw new IllegalArgumentException(
+          "--period-ms must be at most " + MAX_PERIOD_MS + " (an hour), was " + periodMs);
+    }
+    if (atoms != null && atoms < 1) {
+      throw new IllegalArgumentException("--atoms must be at least 1, was " + atoms);
+    }
+  }
+
+  /**
+   * {@code --seconds} as a duration: positive, at least a nanosecond, and at most what a count of
+   * nanoseconds holds (292 years), so that no run silently lasts one cycle.
+   */
+  static Duration simulated(double seconds) {
+    if (!Double.isFinite(seconds)) {
+      throw new IllegalArgumentException("--seconds must be positive and finite, was " + seconds);
+    }
+    String given = BigDecimal.valueOf(seconds).stripTrailingZeros().toPlainString();
+    if (!(seconds > 0)) {
+      throw new IllegalArgumentException("--seconds must be positive and finite, was " + given);
+    }
+    if (seconds > MAX_SECONDS) {
+      throw new IllegalArgumentException(
+          "--seconds must be at most "
+              + MAX_SECONDS
+              + " (292 years of simulated time, the most a run can count in nanoseconds), was "
+              + given);
+    }
+    long nanos = Math.round(seconds * 1e9);
+    if (nanos < 1) {
+      throw new IllegalArgumentException(
+          "--seconds must be at least a nanosecond (0.000000001), was " + given);
+    }
+    return Duration.ofNanos(nanos);
   }
 }

@@ -54,4 +54,9 @@ public record RunSettings(
       throw new IllegalArgumentException("--atoms must be at least 1, not " + atoms.get());
     }
   }
+
+  /** These settings, writing into {@code out} instead. */
+  public RunSettings withOut(Path out) {
+    return new RunSettings(cycles, simulated, period, seed, atoms, realTime, broker, out);
+  }
 }

@@ -52,6 +52,7 @@ final class DistributedAtomProcess implements AutoCloseable {
             "-cp",
             System.getProperty("java.class.path"),
             DistributedAtomMain.class.getName());
+    command.command().addAll(1, quiet(Runtime.version()));
     command.command().addAll(args);
     if (!user.isEmpty()) {
       command.environment().put(DistributedAtomMain.USER, user);
@@ -65,6 +66,17 @@ final class DistributedAtomProcess implements AutoCloseable {
       throw new IllegalStateException(
           "cannot start the JVM of atom " + atom + " (" + java + "): " + e.getMessage(), e);
     }
+  }
+
+  /**
+   * The options that let an atom's JVM (netty, Artemis) run on {@code version} without a {@code
+   * WARNING:} on its console: native access for Artemis' libaio, and, from JDK 23 (24 warns by
+   * default), netty's use of {@code sun.misc.Unsafe}.
+   */
+  static List<String> quiet(Runtime.Version version) {
+    return version.feature() >= 23
+        ? List.of("--enable-native-access=ALL-UNNAMED", "--sun-misc-unsafe-memory-access=allow")
+        : List.of("--enable-native-access=ALL-UNNAMED");
   }
 
   int atom() {

@@ -34,6 +34,9 @@ public final class Replay {
   private static final Pattern ATOM = Pattern.compile("\\{\"id\":(\\d+)");
   private static final int EXCERPT = 48;
 
+  /** How the last line of an incomplete trace begins. */
+  private static final String INCOMPLETE = "{\"type\":\"incomplete\"";
+
   private Replay() {}
 
   /**
@@ -162,16 +165,73 @@ public final class Replay {
   }
 
   /**
+   * The re-run wrote the same trace as far as the trace goes, which is not to the end of its run:
+   * the run was interrupted (the trace's last line says so), or the trace stops in the middle of a
+   * line (the run was killed).
+   *
+   * @param cycles the cycles the trace has
+   * @param of the cycles its run was to last
+   * @param why why the trace stops there
+   * @param sha256 the SHA-256 of the trace's complete lines, in hex
+   */
+  public record ReproducedUpTo(long cycles, long of, String why, String sha256) implements Verdict {
+    @Override
+    public String line() {
+      return "reproduced exactly up to where the trace stops ("
+          + why
+          + "): "
+          + cycles
+          + " of "
+          + of
+          + " cycles, trace sha-256 "
+          + sha256;
+    }
+  }
+
+  /**
+   * The last line of the trace of a run that was interrupted after {@code cycles} of the {@code of}
+   * cycles it was to run.
+   */
+  static String incomplete(long cycles, long of) {
+    return INCOMPLETE
+        + ",\"cycles\":"
+        + cycles
+        + ",\"of\":"
+        + of
+        + ",\"reason\":\"interrupted\"}\n";
+  }
+
+  /**
    * Re-runs {@code example} as {@code header} says and compares what it writes with {@code trace},
-   * the whole text of the trace that {@code header} was read from.
+   * the whole text of the trace that {@code header} was read from. A trace that stops before the
+   * end of its run (its last line marks it incomplete, or it stops in the middle of a line) is
+   * compared with the re-run as far as it goes.
    */
   public static Verdict replay(SimExample example, Header header, String trace) {
     requireNonNull(example, "example");
     requireNonNull(header, "header");
     requireNonNull(trace, "trace");
+    String complete = trace;
+    String why = null;
+    if (!trace.isEmpty() && !trace.endsWith("\n")) {
+      complete = trace.substring(0, trace.lastIndexOf('\n') + 1);
+      why = "it stops in the middle of a line: its run was killed";
+    } else {
+      int last = trace.lastIndexOf('\n', trace.length() - 2) + 1;
+      if (trace.startsWith(INCOMPLETE, last)) {
+        complete = trace.substring(0, last);
+        why = "the run was interrupted";
+      }
+    }
+    long cycles = Math.max(0, complete.lines().count() - 1);
     StringWriter again = new StringWriter();
-    SimRun.traceOnly(example, header.settings(Path.of(".")), again);
-    return compare(trace, again.toString());
+    SimRun.traceOnly(
+        example, header.settings(Path.of(".")), again, why == null ? header.cycles() : cycles);
+    Verdict verdict = compare(complete, again.toString());
+    if (why != null && verdict instanceof Reproduced reproduced) {
+      return new ReproducedUpTo(reproduced.cycles(), header.cycles(), why, reproduced.sha256());
+    }
+    return verdict;
   }
 
   /** Compares the trace as written with the trace of the re-run. */

@@ -12,6 +12,7 @@ import java.time.Duration;
 import java.util.List;
 import java.util.Locale;
 import org.armgals.active.TimeSource;
+import org.armgals.examples.cli.RunInterrupted;
 import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
 import org.armgals.maam.sim.Scene;
@@ -32,8 +33,13 @@ import org.armgals.maam.sim.spi.Pacer;
  *   <li>{@value Outputs#START} and {@value Outputs#END}: the molecule at the start and at the end.
  * </ul>
  *
- * The summary: distance covered by the molecule's centre (on the ground plane), its speed in atom
- * diameters per second (an atom's diameter is tip to tip, legs straight), the energy used, the
+ * It writes them into a {@link Staging} directory inside the output directory and moves them into
+ * place when it ends, so that a run that fails leaves the previous run's files as they were. On
+ * Ctrl-C ({@link Interruption}) it stops after the cycle it is in, keeps what it has, the trace
+ * ending with a line that marks it incomplete ({@link Replay#incomplete}), and exits 130.
+ *
+ * <p>The summary: distance covered by the molecule's centre (on the ground plane), its speed in
+ * atom diameters per second (an atom's diameter is tip to tip, legs straight), the energy used, the
  * adaptations made and why, and the missed cycles (paced to real time: cycles that ended later than
  * a period after their time; plus those the crew reports).
  */
@@ -50,7 +56,10 @@ final class SimRun {
   private SimRun() {}
 
   static Summary run(SimExample example, RunSettings settings, PrintStream out) {
-    return run(example, settings, out, System.console() != null, TimeSource.system());
+    try (Interruption interruption = Interruption.onCtrlC()) {
+      return run(
+          example, settings, out, System.console() != null, TimeSource.system(), interruption);
+    }
   }
 
   static Summary run(
@@ -59,46 +68,91 @@ final class SimRun {
       PrintStream out,
       boolean terminal,
       TimeSource clock) {
+    try (Interruption interruption = Interruption.manual()) {
+      return run(example, settings, out, terminal, clock, interruption);
+    }
+  }
+
+  /**
+   * The run, writing into a new directory inside the output directory that it moves into place when
+   * the run ends (completed or interrupted): a run that fails leaves the previous run's files as
+   * they were. Interrupted, it stops after the cycle it is in, keeps the trace up to there with a
+   * last line that marks it incomplete, draws its pictures, says so and throws {@link
+   * RunInterrupted}.
+   */
+  static Summary run(
+      SimExample example,
+      RunSettings settings,
+      PrintStream out,
+      boolean terminal,
+      TimeSource clock,
+      Interruption interruption) {
     checkBroker(example, settings);
     Scene scene = example.scene(settings);
     long cycles = cycles(example, settings);
-    Path dir = settings.out();
-    try {
-      Files.createDirectories(dir);
-    } catch (IOException e) {
-      throw new UncheckedIOException("cannot create the output directory " + dir, e);
-    }
-    out.printf(
-        Locale.ROOT,
-        "armgals %s: scene '%s', %d atoms, %d cycles of %s ms, seed %d%s%n",
-        example.name(),
-        scene.name(),
-        scene.atoms().size(),
-        cycles,
-        millis(settings.period()),
-        settings.seed(),
-        settings.realTime() ? ", paced to real time" : "");
-    Recording recording = new Recording(scene.params());
-    Progress progress = new Progress(out, terminal, cycles, clock);
-    long missed;
-    long crewMissed;
-    List<Summary.Entry> figures;
-    try (Writer trace = Files.newBufferedWriter(dir.resolve(TRACE), StandardCharsets.UTF_8);
-        Simulation sim = build(example, settings, scene, cycles, trace)) {
-      RecordingJournal journal = new RecordingJournal(sim, recording);
-      // The first sample is taken after cycle 0, of the readings at its start (t = 0): the same
-      // readings as the trace's first line, with the scene's bonds made and its poses applied.
-      try (Crew crew = example.start(sim, settings, journal)) {
-        missed = drive(sim, cycles, settings, recording, progress);
-        recording.end(sim.timeNanos());
-        crewMissed = crew.missedCycles();
-        figures = crew.figures();
+    try (Staging staging = Staging.in(settings.out())) {
+      RunSettings staged = settings.withOut(staging.dir());
+      out.printf(
+          Locale.ROOT,
+          "armgals %s: scene '%s', %d atoms, %d cycles of %s ms, seed %d%s%n",
+          example.name(),
+          scene.name(),
+          scene.atoms().size(),
+          cycles,
+          millis(settings.period()),
+          settings.seed(),
+          settings.realTime() ? ", paced to real time" : "");
+      Recording recording = new Recording(scene.params());
+      Progress progress = new Progress(out, terminal, cycles, clock);
+      long ran;
+      long missed;
+      long crewMissed;
+      List<Summary.Entry> figures;
+      Path tracePath = staging.dir().resolve(TRACE);
+      try (Writer trace = Files.newBufferedWriter(tracePath, StandardCharsets.UTF_8)) {
+        try (Simulation sim = build(example, staged, scene, cycles, trace)) {
+          RecordingJournal journal = new RecordingJournal(sim, recording);
+          // The first sample is taken after cycle 0, of the readings at its start (t = 0): the
+          // same readings as the trace's first line, with the scene's bonds made and its poses
+          // applied.
+          try (Crew crew = example.start(sim, staged, journal)) {
+            long[] counts = drive(sim, cycles, settings, recording, progress, interruption);
+            ran = counts[0];
+            missed = counts[1];
+            recording.end(sim.timeNanos());
+            crewMissed = crew.missedCycles();
+            figures = crew.figures();
+          }
+        }
+        if (ran < cycles) {
+          trace.write(Replay.incomplete(ran, cycles));
+        }
+      } catch (IOException e) {
+        throw new UncheckedIOException(
+            "cannot write the trace " + settings.out().resolve(TRACE), e);
       }
-    } catch (IOException e) {
-      throw new UncheckedIOException("cannot write the trace in " + dir, e);
+      if (ran > 0) { // interrupted before its first cycle, a run has nothing to draw
+        Outputs.write(example.name(), recording, staging.dir());
+      }
+      staging.keep();
+      if (ran < cycles) {
+        out.printf(
+            Locale.ROOT,
+            "%sarmgals %s: interrupted after %d of %d cycles (%.2f s simulated); the trace up to"
+                + " there (marked incomplete)%s %s in %s%n",
+            terminal ? System.lineSeparator() : "",
+            example.name(),
+            ran,
+            cycles,
+            recording.seconds(),
+            ran > 0 ? " and the pictures" : "",
+            ran > 0 ? "are" : "is",
+            settings.out());
+        out.flush();
+        throw new RunInterrupted(example.name() + " was interrupted after " + ran + " cycles");
+      }
+      return recording.summary(missed + crewMissed, figures, settings.out());
     }
-    Outputs.write(example.name(), recording, dir);
-    return recording.summary(missed + crewMissed, figures, dir);
   }
 
   /**
@@ -106,6 +160,13 @@ final class SimRun {
    * what a replay compares with the trace of the original run.
    */
   static void traceOnly(SimExample example, RunSettings settings, Writer trace) {
+    traceOnly(example, settings, trace, cycles(example, settings));
+  }
+
+  /**
+   * As {@link #traceOnly(SimExample, RunSettings, Writer)}, stopping after {@code limit} cycles.
+   */
+  static void traceOnly(SimExample example, RunSettings settings, Writer trace, long limit) {
     checkBroker(example, settings);
     Scene scene = example.scene(settings);
     long cycles = cycles(example, settings);
@@ -114,7 +175,7 @@ final class SimRun {
       Recording recording = new Recording(scene.params());
       Crew crew = example.start(sim, settings, new RecordingJournal(sim, recording));
       try {
-        for (long i = 0; i < cycles; i++) {
+        for (long i = 0; i < Math.min(limit, cycles); i++) {
           sim.runCycle();
         }
       } finally {
@@ -135,7 +196,7 @@ final class SimRun {
     }
     Duration time = settings.simulated().orElse(example.defaultDuration());
     long period = settings.period().toNanos();
-    return Math.max(1, (time.toNanos() + period - 1) / period);
+    return Math.max(1, Math.ceilDiv(time.toNanos(), period));
   }
 
   private static void checkBroker(SimExample example, RunSettings settings) {
@@ -165,19 +226,27 @@ final class SimRun {
     return builder.build();
   }
 
-  private static long drive(
-      Simulation sim, long cycles, RunSettings settings, Recording recording, Progress progress) {
+  /** Runs up to {@code cycles} cycles; answers those it ran and those it missed. */
+  private static long[] drive(
+      Simulation sim,
+      long cycles,
+      RunSettings settings,
+      Recording recording,
+      Progress progress,
+      Interruption interruption) {
     long period = settings.period().toNanos();
     long missed = 0;
-    for (long i = 1; i <= cycles; i++) {
+    long i = 0;
+    while (i < cycles && !interruption.requested()) {
       sim.runCycle();
+      i++;
       recording.sample(sim);
       if (settings.realTime() && progress.elapsedNanos() > sim.timeNanos() + period) {
         missed++;
       }
       progress.update(i, sim.timeNanos());
     }
-    return missed;
+    return new long[] {i, missed};
   }
 
   private static String millis(Duration period) {

@@ -4,11 +4,17 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.io.ByteArrayOutputStream;
+import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.armgals.examples.sim.ScriptedExample;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -107,7 +113,7 @@ class ArmgalsTest {
   void outOfRangeSettingIsOneLineAndStatusTwo() {
     Result r = run("run", "recorder", "--cycles", "0");
     assertThat(r.status()).isEqualTo(Armgals.USAGE);
-    assertThat(r.err().lines()).containsExactly("armgals: --cycles must be at least 1, not 0");
+    assertThat(r.err().lines()).containsExactly("armgals: --cycles must be at least 1, was 0");
   }
 
   @Test
@@ -202,7 +208,7 @@ class ArmgalsTest {
     assertThat(r.status()).as(r.err()).isZero();
     assertThat(r.out())
         .contains("wrote the robot 'bot' in " + target)
-        .contains("mvn -q compile exec:java");
+        .contains("./mvnw -q verify exec:java");
     assertThat(target.resolve("src/main/java/bot/BotRobot.java")).exists();
   }
 
@@ -219,5 +225,194 @@ class ArmgalsTest {
     assertThatThrownBy(() -> Catalog.of(List.of(recording, recording)))
         .isInstanceOf(IllegalArgumentException.class)
         .hasMessageContaining("recorder, recorder");
+  }
+
+  @Test
+  void everyCommandsHelpExitsZeroWithItsUsageAndTheExitStatuses() {
+    for (String command : List.of("list", "run", "replay", "new", "completion")) {
+      for (String help : List.of("--help", "-h")) {
+        Result r = run(command, help);
+        assertThat(r.status()).as("%s %s: %s", command, help, r.err()).isZero();
+        assertThat(r.err()).isEmpty();
+        assertThat(r.out())
+            .as(command)
+            .startsWith("Usage: armgals " + command)
+            .contains("Exit status:")
+            .containsPattern("(?m)^ +0 +done$")
+            .containsPattern("(?m)^ +1 +a run failed")
+            .containsPattern("(?m)^ +2 +the command line was wrong")
+            .containsPattern("(?m)^ +130 +interrupted");
+      }
+    }
+    assertThat(recording.runs).isEmpty();
+  }
+
+  @Test
+  void aBareArmgalsAndItsHelpCommandListTheCommands() {
+    for (Result r : List.of(run(), run("help"), run("--help"))) {
+      assertThat(r.status()).isZero();
+      assertThat(r.out())
+          .startsWith("Usage: armgals")
+          .contains("Commands:")
+          .containsPattern("(?m)^  list ")
+          .containsPattern("(?m)^  run ")
+          .containsPattern("(?m)^  replay ")
+          .containsPattern("(?m)^  new ")
+          .containsPattern("(?m)^  completion ")
+          .containsPattern("(?m)^  help ")
+          .contains("Exit status:");
+    }
+  }
+
+  @Test
+  void theHelpCommandGivesACommandsUsage() {
+    Result r = run("help", "run");
+    assertThat(r.status()).isZero();
+    assertThat(r.out()).startsWith("Usage: armgals run").contains("--period-ms=<ms>");
+  }
+
+  @Test
+  void aMistypedOptionOrCommandGetsASuggestion() {
+    Result option = run("run", "recorder", "--cycle", "5");
+    assertThat(option.status()).isEqualTo(Armgals.USAGE);
+    assertThat(option.err().lines())
+        .containsExactly(
+            "armgals: Unknown options: '--cycle', '5'; did you mean '--cycles'? (try 'armgals run"
+                + " --help')");
+    Result command = run("lst");
+    assertThat(command.status()).isEqualTo(Armgals.USAGE);
+    assertThat(command.err()).contains("did you mean 'list'?");
+    assertThat(run("rnu", "recorder").err()).contains("did you mean 'run'?");
+    assertThat(run("run", "recorder", "--sede", "3").err()).contains("did you mean '--seed'?");
+    assertThat(run("fly").err()).doesNotContain("did you mean");
+    assertThat(recording.runs).isEmpty();
+  }
+
+  @Test
+  void editsCountsLettersAddedDroppedChangedAndSwapped() {
+    assertThat(Armgals.edits("run", "run")).isZero();
+    assertThat(Armgals.edits("rnu", "run")).isEqualTo(1);
+    assertThat(Armgals.edits("--cycle", "--cycles")).isEqualTo(1);
+    assertThat(Armgals.edits("lst", "list")).isEqualTo(1);
+    assertThat(Armgals.edits("replya", "replay")).isEqualTo(1);
+    assertThat(Armgals.edits("fly", "list")).isEqualTo(4);
+    assertThat(Armgals.edits("", "new")).isEqualTo(3);
+  }
+
+  @Test
+  void theCompletionScriptCompletesTheCommandsAndTheirOptionsAndIsBash() throws Exception {
+    Result r = run("completion");
+    assertThat(r.status()).isZero();
+    assertThat(r.out())
+        .startsWith("#!/usr/bin/env bash")
+        .contains("complete -F _complete_armgals")
+        .contains("replay")
+        .contains("--period-ms")
+        .contains("--cycles");
+    Process bash = new ProcessBuilder("bash", "-n").redirectErrorStream(true).start();
+    try (var in = bash.getOutputStream()) {
+      in.write(r.out().getBytes(StandardCharsets.UTF_8));
+    }
+    String said = new String(bash.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+    assertThat(bash.waitFor()).as(said).isZero();
+  }
+
+  @Test
+  void valuesThatWouldOverflowOrRoundToNothingAreRefusedNamingTheOption() {
+    assertThat(usageError("--seconds", "1e10"))
+        .isEqualTo(
+            "armgals: --seconds must be at most 9223372036 (292 years of simulated time, the most a"
+                + " run can count in nanoseconds), was 10000000000");
+    assertThat(usageError("--seconds", "1e-12"))
+        .isEqualTo(
+            "armgals: --seconds must be at least a nanosecond (0.000000001), was 0.000000000001");
+    assertThat(usageError("--seconds", "NaN"))
+        .isEqualTo("armgals: --seconds must be positive and finite, was NaN");
+    assertThat(usageError("--seconds", "-2"))
+        .isEqualTo("armgals: --seconds must be positive and finite, was -2");
+    assertThat(usageError("--period-ms", "0"))
+        .isEqualTo("armgals: --period-ms must be positive, was 0");
+    assertThat(usageError("--period-ms", "9223372036854775807"))
+        .isEqualTo(
+            "armgals: --period-ms must be at most 3600000 (an hour), was 9223372036854775807");
+    assertThat(usageError("--atoms", "0")).isEqualTo("armgals: --atoms must be at least 1, was 0");
+    assertThat(RunCommand.simulated(RunCommand.MAX_SECONDS).toNanos())
+        .isEqualTo(RunCommand.MAX_SECONDS * 1_000_000_000L);
+    assertThat(recording.runs).isEmpty();
+  }
+
+  private String usageError(String option, String value) {
+    Result r = run("run", "recorder", option, value);
+    assertThat(r.status()).as(r.err()).isEqualTo(Armgals.USAGE);
+    assertThat(r.err().lines()).hasSize(1);
+    return r.err().strip();
+  }
+
+  @Test
+  void anOutputDirectoryThatCannotBeMadeIsOneLineWithTheSystemsReason(@TempDir Path dir)
+      throws Exception {
+    Path file = Files.writeString(dir.resolve("a-file"), "not a directory\n");
+    Path out = file.resolve("run");
+    ByteArrayOutputStream err = new ByteArrayOutputStream();
+    int status;
+    try (PrintStream e = new PrintStream(err, true, StandardCharsets.UTF_8)) {
+      status =
+          Armgals.execute(
+              Catalog.of(List.of(new ScriptedExample())),
+              new PrintStream(OutputStream.nullOutputStream()),
+              e,
+              "run",
+              "scripted",
+              "--cycles",
+              "2",
+              "--out",
+              out.toString());
+    }
+    assertThat(status).isEqualTo(Armgals.FAILED);
+    assertThat(err.toString(StandardCharsets.UTF_8).lines())
+        .containsExactly(
+            "armgals: cannot create the output directory " + out + ": Not a directory");
+  }
+
+  @Test
+  void theReasonOfAnIoErrorIsTheSystemsEvenWhenJavaLeavesItOut() {
+    assertThat(Armgals.reason(new AccessDeniedException("/x"))).isEqualTo("Permission denied");
+    assertThat(Armgals.reason(new NoSuchFileException("/x")))
+        .isEqualTo("No such file or directory");
+    assertThat(Armgals.reason(new FileSystemException("/x", null, "No space left on device")))
+        .isEqualTo("No space left on device");
+  }
+
+  @Test
+  void anInterruptedRunIsStatus130AndNothingMoreIsPrinted() {
+    Example interrupted =
+        new Example() {
+          @Override
+          public String name() {
+            return "stopped";
+          }
+
+          @Override
+          public String summary() {
+            return "is interrupted";
+          }
+
+          @Override
+          public Summary run(RunSettings settings, PrintStream out) {
+            out.println("stopped: interrupted after 3 cycles");
+            throw new RunInterrupted("stopped after 3 cycles");
+          }
+        };
+    ByteArrayOutputStream out = new ByteArrayOutputStream();
+    ByteArrayOutputStream err = new ByteArrayOutputStream();
+    int status;
+    try (PrintStream o = new PrintStream(out, true, StandardCharsets.UTF_8);
+        PrintStream e = new PrintStream(err, true, StandardCharsets.UTF_8)) {
+      status = Armgals.execute(Catalog.of(List.of(interrupted)), o, e, "run", "stopped");
+    }
+    assertThat(status).isEqualTo(Armgals.INTERRUPTED).isEqualTo(130);
+    assertThat(out.toString(StandardCharsets.UTF_8))
+        .isEqualTo("stopped: interrupted after 3 cycles" + System.lineSeparator());
+    assertThat(err.toString(StandardCharsets.UTF_8)).isEmpty();
   }
 }

@@ -28,8 +28,14 @@ import javax.tools.JavaCompiler;
 import javax.tools.JavaFileObject;
 import javax.tools.StandardJavaFileManager;
 import javax.tools.ToolProvider;
+import javax.xml.parsers.DocumentBuilderFactory;
+import javax.xml.xpath.XPath;
+import javax.xml.xpath.XPathConstants;
+import javax.xml.xpath.XPathFactory;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.w3c.dom.Document;
+import org.w3c.dom.NodeList;
 
 /** {@code armgals new} writes a robot skeleton that compiles as written, and refuses bad names. */
 class NewCommandTest {
@@ -48,7 +54,11 @@ class NewCommandTest {
             "src/main/java/mybot/Signals.java",
             "src/main/java/mybot/Modules.java",
             "src/main/java/mybot/MybotRobot.java",
-            "src/main/java/mybot/MybotExample.java");
+            "src/main/java/mybot/MybotExample.java",
+            "src/test/java/mybot/MybotRobotTest.java",
+            "mvnw",
+            "mvnw.cmd",
+            ".mvn/wrapper/maven-wrapper.properties");
     String pom = Files.readString(target.resolve("pom.xml"), StandardCharsets.UTF_8);
     assertThat(pom)
         .contains("<armgals.version>9.9.9-TEST</armgals.version>")
@@ -57,7 +67,7 @@ class NewCommandTest {
         .contains("<artifactId>maam-sim</artifactId>")
         .contains("<version>${armgals.version}</version>")
         .contains("<mainClass>mybot.MybotExample</mainClass>");
-    for (Path file : written) {
+    for (Path file : written.subList(0, 7)) {
       assertThat(Files.readString(file, StandardCharsets.UTF_8))
           .as("%s has no placeholder left but Maven's", file)
           .doesNotContainPattern("\\$\\{(name|Name|package|version)}")
@@ -67,7 +77,46 @@ class NewCommandTest {
     assertThat(compile(written.stream().filter(p -> p.toString().endsWith(".java")).toList()))
         .isEmpty();
     assertThat(dir.resolve("classes/mybot/MybotExample.class")).exists();
+    assertThat(dir.resolve("classes/mybot/MybotRobotTest.class")).exists();
     assertThat(runBriefly()).contains(new Summary.Entry("robot cycles", "10"));
+  }
+
+  @Test
+  void theSkeletonHasTheMavenWrapperOfArmgalsExecutable() throws IOException {
+    Path target = dir.resolve("mybot");
+    NewCommand.write("mybot", target, "9.9.9-TEST");
+    Path checkout = Path.of("").toAbsolutePath().getParent();
+
+    for (String file : List.of("mvnw", "mvnw.cmd", ".mvn/wrapper/maven-wrapper.properties")) {
+      assertThat(target.resolve(file)).as(file).hasSameBinaryContentAs(checkout.resolve(file));
+    }
+    assertThat(Files.isExecutable(target.resolve("mvnw"))).isTrue();
+  }
+
+  @Test
+  void theSkeletonsSourcesAreFormattedAsArmgalsOwnWhateverTheNamesLength() throws Exception {
+    List<String> sources = new ArrayList<>();
+    for (String name : List.of("bot", "mybot", "abcdefghijklmnopqrst")) {
+      NewCommand.write(name, dir.resolve(name), "9.9.9-TEST").stream()
+          .filter(p -> p.toString().endsWith(".java"))
+          .forEach(p -> sources.add(p.toString()));
+    }
+    Path formatter = Path.of(System.getProperty("armgals.formatter", "(armgals.formatter unset)"));
+    assertThat(formatter).as("google-java-format, as the build fetches it").isRegularFile();
+
+    List<String> command = new ArrayList<>();
+    command.addAll(
+        List.of(
+            Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+            "-jar",
+            formatter.toString(),
+            "--dry-run"));
+    command.addAll(sources);
+    Process format = new ProcessBuilder(command).redirectErrorStream(true).start();
+    String unformatted = new String(format.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+
+    assertThat(format.waitFor()).as(unformatted).isZero();
+    assertThat(unformatted).as("the files google-java-format would change").isEmpty();
   }
 
   /** Runs the compiled skeleton's example for ten cycles; answers its summary. */
@@ -94,13 +143,41 @@ class NewCommandTest {
   }
 
   @Test
+  void theSkeletonsPomParsesAndPinsTheReleaseAndTheRequirements() throws Exception {
+    Path target = dir.resolve("mybot");
+    NewCommand.write("mybot", target, "9.9.9-TEST");
+
+    DocumentBuilderFactory factory = DocumentBuilderFactory.newInstance();
+    factory.setNamespaceAware(false);
+    factory.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
+    Document pom = factory.newDocumentBuilder().parse(target.resolve("pom.xml").toFile());
+    XPath xpath = XPathFactory.newInstance().newXPath();
+
+    assertThat(xpath.evaluate("/project/properties/maven.compiler.release", pom)).isEqualTo("21");
+    assertThat(xpath.evaluate("/project/artifactId", pom)).isEqualTo("mybot");
+    String enforcer = "//plugin[artifactId='maven-enforcer-plugin']";
+    assertThat(xpath.evaluate(enforcer + "//requireMavenVersion/version", pom)).isEqualTo("[3.9,)");
+    assertThat(xpath.evaluate(enforcer + "//requireJavaVersion/version", pom)).isEqualTo("[21,)");
+    assertThat(xpath.evaluate(enforcer + "//requireJavaVersion/message", pom))
+        .contains("JDK 21 or later");
+    NodeList plugins = (NodeList) xpath.evaluate("//plugin", pom, XPathConstants.NODESET);
+    for (int i = 0; i < plugins.getLength(); i++) {
+      assertThat(xpath.evaluate("version", plugins.item(i)))
+          .as("the version of %s", xpath.evaluate("artifactId", plugins.item(i)))
+          .matches("\\d+(\\.\\d+)+");
+    }
+    assertThat(xpath.evaluate("//plugin[artifactId='maven-compiler-plugin']/version", pom))
+        .isNotEmpty();
+  }
+
+  @Test
   void theVersionIsTheBuildsOwn() {
     assertThat(NewCommand.version()).matches("\\d+\\.\\d+\\.\\d+.*");
   }
 
   @Test
   void badNamesAndExistingDirectoriesAreRefusedWritingNothing() throws IOException {
-    for (String bad : List.of("MyBot", "my-bot", "9bot", "", "class")) {
+    for (String bad : List.of("MyBot", "my-bot", "9bot", "", "class", "abcdefghijklmnopqrstu")) {
       assertThatThrownBy(() -> NewCommand.write(bad, dir.resolve("x"), "1"))
           .as(bad)
           .isInstanceOf(UsageException.class)
@@ -114,6 +191,31 @@ class NewCommandTest {
     try (Stream<Path> files = Files.list(existing)) {
       assertThat(files).isEmpty();
     }
+  }
+
+  @Test
+  void aSkeletonInsideAnArmgalsCheckoutIsRefusedWritingNothing() throws IOException {
+    Path checkout = Files.createDirectories(dir.resolve("armgals"));
+    Files.writeString(
+        checkout.resolve("pom.xml"),
+        "<project>\n  <groupId>org.armgals</groupId>\n"
+            + "  <artifactId>armgals-parent</artifactId>\n</project>\n");
+    Path deeper = Files.createDirectories(checkout.resolve("examples/src"));
+
+    for (Path target : List.of(checkout.resolve("mybot"), deeper.resolve("mybot"))) {
+      assertThatThrownBy(() -> NewCommand.write("mybot", target, "1"))
+          .as(target.toString())
+          .isInstanceOf(UsageException.class)
+          .hasMessage(
+              target
+                  + " is inside the armgals checkout "
+                  + checkout
+                  + ", whose build would take it for one of its own; write it elsewhere, say"
+                  + " --dir "
+                  + dir.resolve("mybot"));
+      assertThat(target).doesNotExist();
+    }
+    assertThat(NewCommand.write("mybot", dir.resolve("mybot"), "1")).isNotEmpty();
   }
 
   @Test

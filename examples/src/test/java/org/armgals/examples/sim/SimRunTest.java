@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.io.PrintStream;
 import java.io.StringWriter;
 import java.net.URI;
@@ -19,9 +20,14 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalLong;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.stream.Stream;
 import javax.imageio.ImageIO;
+import org.armgals.examples.cli.RunInterrupted;
 import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
+import org.armgals.maam.sim.Scene;
+import org.armgals.maam.sim.Simulation;
+import org.armgals.maam.spi.Leg;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -238,5 +244,250 @@ class SimRunTest {
             "\r[##############################] 100%  simulated 0.50 s  10 cycles/s"
                 + "  0.5× real time"
                 + System.lineSeparator());
+  }
+
+  /** A scripted example whose crew cannot start, as a distributed one with no broker. */
+  private static final class FailingAtStart implements SimExample {
+    private final ScriptedExample scripted = new ScriptedExample();
+
+    @Override
+    public String name() {
+      return scripted.name();
+    }
+
+    @Override
+    public String summary() {
+      return "cannot start";
+    }
+
+    @Override
+    public Scene scene(RunSettings settings) {
+      return scripted.scene(settings);
+    }
+
+    @Override
+    public Duration defaultDuration() {
+      return scripted.defaultDuration();
+    }
+
+    @Override
+    public Crew start(Simulation sim, RunSettings settings, Journal journal) {
+      throw new IllegalStateException("could not reach the broker");
+    }
+  }
+
+  /**
+   * A scripted tripod whose controller asks {@code interruption} to stop the run during cycle
+   * {@code at}, as Ctrl-C would.
+   */
+  private static final class InterruptedAt implements SimExample {
+    private final ScriptedExample scripted = new ScriptedExample();
+    private final Interruption interruption;
+    private final long at;
+
+    InterruptedAt(Interruption interruption, long at) {
+      this.interruption = interruption;
+      this.at = at;
+    }
+
+    @Override
+    public String name() {
+      return scripted.name();
+    }
+
+    @Override
+    public String summary() {
+      return "interrupted";
+    }
+
+    @Override
+    public Scene scene(RunSettings settings) {
+      return scripted.scene(settings);
+    }
+
+    @Override
+    public Duration defaultDuration() {
+      return scripted.defaultDuration();
+    }
+
+    @Override
+    public Crew start(Simulation sim, RunSettings settings, Journal journal) {
+      for (int id : sim.atomIds()) {
+        sim.setController(
+            id,
+            (body, cycle) -> {
+              body.setLegTarget(Leg.PX, 0.4 * Math.sin(cycle * 0.3), 0);
+              if (cycle == at) {
+                interruption.request();
+              }
+            });
+      }
+      return new Crew() {};
+    }
+  }
+
+  private static Map<String, String> files(Path dir) throws IOException {
+    Map<String, String> files = new java.util.TreeMap<>();
+    try (Stream<Path> all = Files.list(dir)) {
+      for (Path file : all.toList()) {
+        files.put(
+            file.getFileName().toString(),
+            java.util.HexFormat.of()
+                .formatHex(
+                    java.security.MessageDigest.getInstance("SHA-256")
+                        .digest(Files.readAllBytes(file))));
+      }
+    } catch (java.security.NoSuchAlgorithmException e) {
+      throw new AssertionError(e);
+    }
+    return files;
+  }
+
+  @Test
+  void aRunThatFailsAtItsStartLeavesThePreviousRunsFilesAsTheyWere() throws IOException {
+    run(cycles(5), false, new AtomicLong());
+    Files.writeString(dir.resolve("notes.txt"), "mine\n");
+    Map<String, String> before = files(dir);
+    assertThat(before).containsKeys(SimRun.TRACE, Outputs.TRAJECTORY, "notes.txt");
+
+    assertThatThrownBy(
+            () ->
+                SimRun.run(
+                    new FailingAtStart(),
+                    cycles(5),
+                    new PrintStream(OutputStream.nullOutputStream()),
+                    false,
+                    () -> 0))
+        .isInstanceOf(IllegalStateException.class)
+        .hasMessage("could not reach the broker");
+
+    assertThat(files(dir)).isEqualTo(before);
+  }
+
+  @Test
+  void aFirstRunThatFailsAtItsStartLeavesNoDirectory() {
+    Path out = dir.resolve("runs/scripted");
+    RunSettings settings = cycles(5).withOut(out);
+
+    assertThatThrownBy(
+            () ->
+                SimRun.run(
+                    new FailingAtStart(),
+                    settings,
+                    new PrintStream(OutputStream.nullOutputStream()),
+                    false,
+                    () -> 0))
+        .isInstanceOf(IllegalStateException.class);
+
+    assertThat(out).doesNotExist();
+  }
+
+  @Test
+  void aCompletedRunReplacesThePreviousRunsFilesAndLeavesOthers() throws IOException {
+    run(cycles(5), false, new AtomicLong());
+    Files.writeString(dir.resolve("notes.txt"), "mine\n");
+
+    run(cycles(9), false, new AtomicLong());
+
+    assertThat(Files.readAllLines(dir.resolve(SimRun.TRACE))).hasSize(1 + 9);
+    assertThat(dir.resolve("notes.txt")).hasContent("mine");
+    try (Stream<Path> all = Files.list(dir)) {
+      assertThat(all.map(p -> p.getFileName().toString())).noneMatch(n -> n.startsWith("."));
+    }
+  }
+
+  @Test
+  void anInterruptedRunKeepsItsTraceMarkedIncompleteAndItsPicturesAndSaysSo() throws IOException {
+    ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+    try (Interruption interruption = Interruption.manual();
+        PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8)) {
+      SimExample example = new InterruptedAt(interruption, 7);
+      assertThatThrownBy(() -> SimRun.run(example, cycles(20), out, false, () -> 0, interruption))
+          .isInstanceOf(RunInterrupted.class);
+
+      List<String> trace = Files.readAllLines(dir.resolve(SimRun.TRACE), StandardCharsets.UTF_8);
+      // the header, cycles 0 to 7 (the one it was in when asked), and the mark
+      assertThat(trace).hasSize(1 + 8 + 1);
+      assertThat(trace.get(8)).startsWith("{\"type\":\"cycle\",\"cycle\":7,");
+      assertThat(trace.get(9))
+          .isEqualTo("{\"type\":\"incomplete\",\"cycles\":8,\"of\":20,\"reason\":\"interrupted\"}");
+      for (String png : List.of(Outputs.TRAJECTORY, Outputs.ENERGY, Outputs.START, Outputs.END)) {
+        assertThat(dir.resolve(png)).isNotEmptyFile();
+      }
+      assertThat(bytes.toString(StandardCharsets.UTF_8))
+          .contains(
+              "armgals scripted: interrupted after 8 of 20 cycles (0.08 s simulated); the trace up"
+                  + " to there (marked incomplete) and the pictures are in "
+                  + dir);
+
+      String text = Files.readString(dir.resolve(SimRun.TRACE), StandardCharsets.UTF_8);
+      Replay.Verdict verdict = Replay.replay(example, Replay.Header.parse(trace.get(0)), text);
+      assertThat(verdict)
+          .isInstanceOfSatisfying(
+              Replay.ReproducedUpTo.class,
+              v -> {
+                assertThat(v.cycles()).isEqualTo(8);
+                assertThat(v.of()).isEqualTo(20);
+                assertThat(v.why()).isEqualTo("the run was interrupted");
+              });
+      assertThat(verdict.line())
+          .startsWith(
+              "reproduced exactly up to where the trace stops (the run was interrupted): 8 of 20"
+                  + " cycles, trace sha-256 ");
+    }
+  }
+
+  @Test
+  void aRunInterruptedBeforeItsFirstCycleKeepsItsHeaderMarkedIncompleteAndNoPictures()
+      throws IOException {
+    ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+    try (Interruption interruption = Interruption.manual();
+        PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8)) {
+      interruption.request();
+      assertThatThrownBy(() -> SimRun.run(example, cycles(20), out, false, () -> 0, interruption))
+          .isInstanceOf(RunInterrupted.class);
+    }
+
+    List<String> trace = Files.readAllLines(dir.resolve(SimRun.TRACE), StandardCharsets.UTF_8);
+    assertThat(trace).hasSize(2);
+    assertThat(trace.get(1)).contains("\"cycles\":0,\"of\":20");
+    assertThat(dir.resolve(Outputs.TRAJECTORY)).doesNotExist();
+    assertThat(bytes.toString(StandardCharsets.UTF_8))
+        .contains("interrupted after 0 of 20 cycles (0.00 s simulated); the trace up to there")
+        .contains("(marked incomplete) is in " + dir);
+    assertThat(
+            Replay.replay(
+                    example,
+                    Replay.Header.parse(trace.get(0)),
+                    Files.readString(dir.resolve(SimRun.TRACE), StandardCharsets.UTF_8))
+                .line())
+        .startsWith(
+            "reproduced exactly up to where the trace stops (the run was interrupted): 0 of");
+  }
+
+  @Test
+  void aTraceCutInTheMiddleOfALineReplaysUpToItsLastWholeLine() throws IOException {
+    run(cycles(12), false, new AtomicLong());
+    String text = Files.readString(dir.resolve(SimRun.TRACE), StandardCharsets.UTF_8);
+    String cut = text.substring(0, text.length() - 40);
+    Replay.Header header = Replay.Header.parse(text.lines().findFirst().orElseThrow());
+
+    Replay.Verdict verdict = Replay.replay(example, header, cut);
+
+    assertThat(verdict.line())
+        .startsWith(
+            "reproduced exactly up to where the trace stops (it stops in the middle of a line: its"
+                + " run was killed): 11 of 12 cycles");
+    String changed = cut.replaceFirst("\"energy\":[0-9.]+", "\"energy\":1");
+    assertThat(Replay.replay(example, header, changed)).isInstanceOf(Replay.Differs.class);
+  }
+
+  @Test
+  void aRunOfTheLongestDurationCountsItsCyclesWithoutOverflow() {
+    Duration longest = Duration.ofSeconds(Long.MAX_VALUE / 1_000_000_000L);
+
+    assertThat(SimRun.cycles(example, settings(OptionalLong.empty(), Optional.of(longest))))
+        .isEqualTo(Math.ceilDiv(longest.toNanos(), PERIOD.toNanos()))
+        .isGreaterThan(1);
   }
 }
