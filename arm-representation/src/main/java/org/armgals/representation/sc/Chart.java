@@ -161,9 +161,14 @@ final class Chart {
     if (node.isCompound()) {
       String initial = source.initial();
       Node target = initial == null ? node.stateChildren().get(0) : node(initial, "initial");
-      if (target.isHistory() || !target.isDescendantOf(node)) {
+      boolean legal = target.isHistory() ? target.parent == node : target.isDescendantOf(node);
+      if (!legal) {
         throw new IllegalArgumentException(
-            "initial '" + initial + "' of '" + node.id + "' is not a state inside it");
+            "initial '"
+                + initial
+                + "' of '"
+                + node.id
+                + "' is not a state inside it nor one of its history pseudo-states");
       }
       node.initial.add(target);
     }

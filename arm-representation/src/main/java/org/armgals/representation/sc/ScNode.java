@@ -11,15 +11,16 @@ import org.jspecify.annotations.Nullable;
  * {@code <history>} in SCXML) with its children.
  *
  * <p>A {@link Kind#STATE} with state children is compound: it enters {@link #initial()} (its first
- * child when null) by default; without them it is atomic. A {@link Kind#PARALLEL} has orthogonal
- * regions, all active together. A history pseudo-state remembers the active children ({@link
- * Kind#SHALLOW_HISTORY}) or atomic descendants ({@link Kind#DEEP_HISTORY}) of its parent when the
- * parent is exited; a transition to it restores them, or enters {@link #historyDefault()} (its
- * parent's initial state when empty) the first time.
+ * child when null; a history child enters what the history says) by default; without them it is
+ * atomic. A {@link Kind#PARALLEL} has orthogonal regions, all active together. A history
+ * pseudo-state remembers the active children ({@link Kind#SHALLOW_HISTORY}) or atomic descendants
+ * ({@link Kind#DEEP_HISTORY}) of its parent when the parent is exited; a transition to it restores
+ * them, or enters {@link #historyDefault()} (its parent's initial state when empty) the first time.
  *
  * @param id unique in the chart
  * @param kind what the node is
- * @param initial for a compound state, the descendant entered by default; null for its first child
+ * @param initial for a compound state, the descendant (or history child) entered by default; null
+ *     for its first child
  * @param onEntry actions on entry, in order
  * @param onExit actions on exit, in order
  * @param historyDefault for a history pseudo-state, where it leads before anything is remembered

@@ -152,13 +152,27 @@ class StatechartTest {
               ScTransition.on("t3", "a2", "f", "b2").when("In(b1)"));
 
   @Test
-  void oneEventTakesATransitionInEachOrthogonalRegionInDocumentOrder() {
+  void oneEventTakesATransitionInEachOrthogonalRegionAsOneMicrostep() {
     Activation<Configuration> a = start(REGIONS);
     assertThat(a.state().active()).containsExactly("Par", "R1", "a1", "R2", "a2");
     List<Step<Configuration>> steps = a.dispatch("e", null);
-    assertThat(behaviors(steps)).containsExactly("t1", "t2");
-    assertThat(steps.get(0).result()).isEqualTo(List.of("one"));
+    assertThat(behaviors(steps)).containsExactly("t1 t2");
+    assertThat(steps.get(0).result()).isEqualTo(List.of("one", "two"));
     assertThat(a.state().active()).containsExactly("Par", "R1", "b1", "R2", "b2");
+  }
+
+  @Test
+  void aMicrostepOfSeveralTransitionsIsReplayedByItsName() {
+    Statechart chart = Statechart.of(REGIONS);
+    Activation<Configuration> model = start(chart);
+    Step<Configuration> step = model.apply("t1 t2", null);
+    assertThat(step.result()).isEqualTo(List.of("one", "two"));
+    assertThat(model.state().active()).containsExactly("Par", "R1", "b1", "R2", "b2");
+    assertThatThrownBy(() -> model.apply("t1 nowhere", null))
+        .isInstanceOf(org.armgals.representation.NoSuchBehaviorException.class)
+        .hasMessageContaining("t1 nowhere");
+    assertThatThrownBy(() -> model.apply("t1 t2", null))
+        .isInstanceOf(org.armgals.representation.BehaviorNotApplicableException.class);
   }
 
   @Test
