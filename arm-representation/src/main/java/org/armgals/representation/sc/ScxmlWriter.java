@@ -11,11 +11,28 @@ import java.util.Set;
 final class ScxmlWriter {
   private final StringBuilder out = new StringBuilder();
   private final Map<String, List<ScTransition>> bySource = new LinkedHashMap<>();
+  // The place of each source's transitions in the definition's list, in the same order.
+  private final Map<String, List<Integer>> places = new LinkedHashMap<>();
 
   private ScxmlWriter(ScDefinition definition) {
-    for (ScTransition t : definition.transitions()) {
+    List<ScTransition> all = definition.transitions();
+    for (int i = 0; i < all.size(); i++) {
+      ScTransition t = all.get(i);
       bySource.computeIfAbsent(t.source(), s -> new ArrayList<>()).add(t);
+      places.computeIfAbsent(t.source(), s -> new ArrayList<>()).add(i);
     }
+  }
+
+  /** The first place of a transition leaving {@code node} or a descendant; -1 for none. */
+  private int first(ScNode node) {
+    int min = places.getOrDefault(node.id(), List.of(-1)).get(0);
+    for (ScNode child : node.children()) {
+      int c = first(child);
+      if (c >= 0 && (min < 0 || c < min)) {
+        min = c;
+      }
+    }
+    return min;
   }
 
   static String write(ScDefinition definition) {
@@ -96,11 +113,20 @@ final class ScxmlWriter {
           .append(escape(String.join(" ", node.historyDefault())))
           .append("\"/>\n");
     }
-    for (int i = 0; i < transitions.size(); i++) {
-      transition(transitions.get(i), i + 1, depth + 1);
-    }
+    // The reader lists transitions in document order, so a state's own transitions go among its
+    // children where that order puts them: before a child whose subtree has a later transition.
+    List<Integer> own = places.getOrDefault(node.id(), List.of());
+    int next = 0;
     for (ScNode child : node.children()) {
+      int c = first(child);
+      while (c >= 0 && next < transitions.size() && own.get(next) < c) {
+        transition(transitions.get(next), next + 1, depth + 1);
+        next++;
+      }
       node(child, depth + 1);
+    }
+    for (; next < transitions.size(); next++) {
+      transition(transitions.get(next), next + 1, depth + 1);
     }
     indent(depth).append("</").append(tag).append(">\n");
   }
