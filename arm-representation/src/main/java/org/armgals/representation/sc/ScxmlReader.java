@@ -23,9 +23,12 @@ import org.xml.sax.helpers.DefaultHandler;
 final class ScxmlReader {
   private ScxmlReader() {}
 
-  /** An element as parsed: namespace, local name, attributes, children, line. */
+  /**
+   * An element as parsed: namespace, local name, attributes, children, line, and the line of the
+   * first text it holds directly (-1 for none; white space is not text).
+   */
   private record El(
-      String ns, String name, Map<String, String> attrs, List<El> children, int line) {
+      String ns, String name, Map<String, String> attrs, List<El> children, int line, int[] text) {
     String tag() {
       return ns.equals(Scxml.ARM_NAMESPACE) ? "arm:" + name : name;
     }
@@ -42,7 +45,12 @@ final class ScxmlReader {
       return value.strip();
     }
 
+    /** Refuses attributes other than {@code keys}, and text: every supported element says so. */
     void allow(String... keys) {
+      if (text[0] >= 0) {
+        throw new ScxmlException(
+            "text in <" + tag() + "> is not supported; expected elements only", text[0]);
+      }
       Set<String> allowed = Set.of(keys);
       for (String key : attrs.keySet()) {
         if (!allowed.contains(key)) {
@@ -76,7 +84,7 @@ final class ScxmlReader {
         String name = attributes.getLocalName(i);
         attrs.put(ns.equals(Scxml.ARM_NAMESPACE) ? "arm:" + name : name, attributes.getValue(i));
       }
-      El el = new El(uri, local, attrs, new ArrayList<>(), line());
+      El el = new El(uri, local, attrs, new ArrayList<>(), line(), new int[] {-1});
       if (stack.isEmpty()) {
         root = el;
       } else {
@@ -92,11 +100,14 @@ final class ScxmlReader {
 
     @Override
     public void characters(char[] ch, int start, int length) {
-      if (!new String(ch, start, length).isBlank()) {
-        String where =
-            stack.isEmpty() ? "the document" : "<" + stack.get(stack.size() - 1).tag() + ">";
-        throw new ScxmlException(
-            "text in " + where + " is not supported; expected elements only", line());
+      // Text is refused when its element is converted, so that an unsupported element holding
+      // text (<data>, <content>, <script>) is refused as such, and text in a supported one is
+      // named with its element.
+      if (!stack.isEmpty() && !new String(ch, start, length).isBlank()) {
+        int[] text = stack.get(stack.size() - 1).text();
+        if (text[0] < 0) {
+          text[0] = line();
+        }
       }
     }
   }

@@ -127,6 +127,57 @@ class ScxmlTest {
   }
 
   @Test
+  void textInsideDataOrContentIsRefusedAsTheUnsupportedElementHoldingItWithItsLine() {
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml">
+                      <state id="A">
+                        <datamodel>
+                          <data id="x">42</data>
+                        </datamodel>
+                      </state>
+                    </scxml>
+                    """))
+        .isInstanceOf(ScxmlException.class)
+        .hasMessageContaining("element <datamodel> is not supported")
+        .hasMessageNotContaining("text")
+        .satisfies(e -> assertThat(((ScxmlException) e).line()).isEqualTo(3));
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml">
+                      <state id="A">
+                        <onentry>
+                          <send event="e"><content>hello</content></send>
+                        </onentry>
+                      </state>
+                    </scxml>
+                    """))
+        .hasMessageContaining("element <send> is not supported")
+        .hasMessageNotContaining("text")
+        .satisfies(e -> assertThat(((ScxmlException) e).line()).isEqualTo(4));
+  }
+
+  @Test
+  void textInASupportedElementIsRefusedNamingThatElementAndTheTextsLine() {
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml">
+                      <state id="A">
+                        <onentry><raise event="e">now</raise></onentry>
+                      </state>
+                    </scxml>
+                    """))
+        .hasMessageContaining("text in <raise> is not supported")
+        .satisfies(e -> assertThat(((ScxmlException) e).line()).isEqualTo(3));
+  }
+
+  @Test
   void anUnsupportedAttributeOrValueIsRefusedNamingIt() {
     assertThatThrownBy(
             () ->
