@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.Supplier;
+import java.util.regex.Pattern;
 import javax.xml.XMLConstants;
 import javax.xml.parsers.ParserConfigurationException;
 import javax.xml.parsers.SAXParserFactory;
@@ -132,6 +133,9 @@ final class ScxmlReader {
     return new ScxmlReader.Conversion().definition(root);
   }
 
+  /** What a guard's name looks like in {@code cond}: a Java identifier. */
+  private static final Pattern GUARD_NAME = Pattern.compile("[A-Za-z_$][A-Za-z0-9_$]*");
+
   /** From parsed elements to the definition's records. */
   private static final class Conversion {
     private final List<ScTransition> transitions = new ArrayList<>();
@@ -149,9 +153,12 @@ final class ScxmlReader {
       }
       scxml.allow("initial", "name", "version", "datamodel");
       String datamodel = scxml.attr("datamodel");
-      if (datamodel != null && !datamodel.strip().equals("null")) {
+      if (datamodel != null && !Set.of("null", "ecmascript").contains(datamodel.strip())) {
         throw new ScxmlException(
-            "datamodel '" + datamodel + "' is not supported; expected none or 'null'",
+            "datamodel '"
+                + datamodel
+                + "' is not supported; expected none, 'null' or 'ecmascript' (whose conditions"
+                + " must then be in the condition language)",
             scxml.line());
       }
       String version = scxml.attr("version");
@@ -298,7 +305,7 @@ final class ScxmlReader {
             el.line());
       }
       List<ScAction> actions = content(el);
-      String cond = el.attr("cond");
+      String cond = condition(el);
       return guarded(
           el,
           () ->
@@ -310,6 +317,30 @@ final class ScxmlReader {
                   tokens(target),
                   internal,
                   actions));
+    }
+
+    /**
+     * The {@code cond} of a transition, if it is in the condition language or the name of a guard;
+     * anything else (an ECMAScript expression beyond the language) is refused here, with the
+     * construct and the line.
+     */
+    private static @Nullable String condition(El transition) {
+      String cond = transition.attr("cond");
+      if (cond == null) {
+        return null;
+      }
+      String text = cond.strip();
+      try {
+        Condition.parse(text);
+      } catch (IllegalArgumentException e) {
+        if (!GUARD_NAME.matcher(text).matches()) {
+          throw new ScxmlException(
+              "cond of <transition> is neither a guard's name nor in the condition language: "
+                  + e.getMessage(),
+              transition.line());
+        }
+      }
+      return text;
     }
 
     private static List<String> tokens(@Nullable String value) {
