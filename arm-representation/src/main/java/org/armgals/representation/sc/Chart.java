@@ -24,6 +24,7 @@ final class Chart {
     final int depth;
     final List<ScAction> onEntry;
     final List<ScAction> onExit;
+    final List<ScAction> defaultActions;
     final List<Node> children = new ArrayList<>();
     final List<Node> initial = new ArrayList<>();
     final List<Node> historyDefault = new ArrayList<>();
@@ -39,6 +40,7 @@ final class Chart {
       this.depth = parent == null ? 0 : parent.depth + 1;
       this.onEntry = source.onEntry();
       this.onExit = source.onExit();
+      this.defaultActions = source.defaultActions();
     }
 
     boolean isHistory() {

@@ -25,6 +25,10 @@ import org.jspecify.annotations.Nullable;
  * @param onExit actions on exit, in order
  * @param historyDefault for a history pseudo-state, where it leads before anything is remembered
  * @param children sub-states and history pseudo-states, in document order
+ * @param defaultActions the content of the default transition: for a compound state with an {@code
+ *     initial}, that of its {@code <initial>} transition, run after its entry actions when it is
+ *     entered by default; for a history with a default, that of its default transition, run after
+ *     its parent's entry actions when the default is taken
  */
 public record ScNode(
     String id,
@@ -33,7 +37,8 @@ public record ScNode(
     List<ScAction> onEntry,
     List<ScAction> onExit,
     List<String> historyDefault,
-    List<ScNode> children) {
+    List<ScNode> children,
+    List<ScAction> defaultActions) {
 
   /** What a node is. */
   public enum Kind {
@@ -68,6 +73,7 @@ public record ScNode(
     onExit = List.copyOf(requireNonNull(onExit, "onExit"));
     historyDefault = ScNames.requireNames(historyDefault, "history default of '" + id + "'");
     children = List.copyOf(requireNonNull(children, "children"));
+    defaultActions = List.copyOf(requireNonNull(defaultActions, "defaultActions"));
     if ((kind == Kind.FINAL || kind.isHistory()) && !children.isEmpty()) {
       throw new IllegalArgumentException(kind + " '" + id + "' has children; expected none");
     }
@@ -78,6 +84,14 @@ public record ScNode(
       throw new IllegalArgumentException(
           kind + " '" + id + "' has a history default; only a history has one");
     }
+    if (!defaultActions.isEmpty() && initial == null && historyDefault.isEmpty()) {
+      throw new IllegalArgumentException(
+          kind
+              + " '"
+              + id
+              + "' has default actions; only a state with an initial or a history with a default"
+              + " has them");
+    }
     if (initial != null) {
       ScNames.requireName(initial, "initial of '" + id + "'");
       if (kind != Kind.STATE || children.stream().allMatch(c -> c.kind().isHistory())) {
@@ -85,6 +99,18 @@ public record ScNode(
             kind + " '" + id + "' has initial '" + initial + "'; only a compound state has one");
       }
     }
+  }
+
+  /** A node without default actions. */
+  public ScNode(
+      String id,
+      Kind kind,
+      @Nullable String initial,
+      List<ScAction> onEntry,
+      List<ScAction> onExit,
+      List<String> historyDefault,
+      List<ScNode> children) {
+    this(id, kind, initial, onEntry, onExit, historyDefault, children, List.of());
   }
 
   /** A state: atomic without children, compound with them. */
@@ -118,16 +144,41 @@ public record ScNode(
 
   /** This node with {@code initial} as its default descendant. */
   public ScNode withInitial(String initial) {
-    return new ScNode(id, kind, initial, onEntry, onExit, historyDefault, children);
+    return new ScNode(id, kind, initial, onEntry, onExit, historyDefault, children, defaultActions);
   }
 
   /** This node with {@code actions} on entry. */
   public ScNode onEntry(ScAction... actions) {
-    return new ScNode(id, kind, initial, Arrays.asList(actions), onExit, historyDefault, children);
+    return new ScNode(
+        id,
+        kind,
+        initial,
+        Arrays.asList(actions),
+        onExit,
+        historyDefault,
+        children,
+        defaultActions);
   }
 
   /** This node with {@code actions} on exit. */
   public ScNode onExit(ScAction... actions) {
-    return new ScNode(id, kind, initial, onEntry, Arrays.asList(actions), historyDefault, children);
+    return new ScNode(
+        id,
+        kind,
+        initial,
+        onEntry,
+        Arrays.asList(actions),
+        historyDefault,
+        children,
+        defaultActions);
+  }
+
+  /**
+   * This node with {@code actions} as the content of its default transition (its {@code <initial>}
+   * transition, or its default as a history).
+   */
+  public ScNode onDefault(ScAction... actions) {
+    return new ScNode(
+        id, kind, initial, onEntry, onExit, historyDefault, children, Arrays.asList(actions));
   }
 }

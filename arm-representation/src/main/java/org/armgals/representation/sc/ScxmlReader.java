@@ -196,6 +196,7 @@ final class ScxmlReader {
       List<ScAction> onEntry = new ArrayList<>();
       List<ScAction> onExit = new ArrayList<>();
       List<String> historyDefault = new ArrayList<>();
+      List<ScAction> defaultActions = new ArrayList<>();
       List<ScNode> children = new ArrayList<>();
       int transitionCount = 0;
       for (El child : el.children()) {
@@ -226,6 +227,7 @@ final class ScxmlReader {
                   child.line());
             }
             initial = initialChild(child);
+            defaultActions.addAll(content(child.children().get(0)));
           }
           case "history/transition" -> {
             if (!historyDefault.isEmpty()) {
@@ -234,6 +236,7 @@ final class ScxmlReader {
                   child.line());
             }
             historyDefault.addAll(targetOnly(child));
+            defaultActions.addAll(content(child));
           }
           default ->
               throw unsupported(child, "what SCXML allows in <" + kind + "> among the subset");
@@ -247,7 +250,9 @@ final class ScxmlReader {
             default -> historyKind(el);
           };
       String init = initial;
-      return guarded(el, () -> new ScNode(id, k, init, onEntry, onExit, historyDefault, children));
+      return guarded(
+          el,
+          () -> new ScNode(id, k, init, onEntry, onExit, historyDefault, children, defaultActions));
     }
 
     private static ScNode.Kind historyKind(El el) {
@@ -277,14 +282,12 @@ final class ScxmlReader {
       return targets.get(0);
     }
 
-    /** The targets of a transition that may hold nothing else (in initial and history). */
+    /**
+     * The targets of a default transition (in initial and history), which has no event, condition
+     * or type; its content is read by {@link #content}.
+     */
     private static List<String> targetOnly(El transition) {
       transition.allow("target");
-      if (!transition.children().isEmpty()) {
-        throw new ScxmlException(
-            "executable content in this <transition> is not supported; expected a target only",
-            transition.line());
-      }
       return List.of(transition.required("target").split("\\s+"));
     }
 

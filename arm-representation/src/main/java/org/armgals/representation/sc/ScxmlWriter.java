@@ -1,5 +1,7 @@
 package org.armgals.representation.sc;
 
+import static java.util.Objects.requireNonNull;
+
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
@@ -87,7 +89,8 @@ final class ScxmlWriter {
           case SHALLOW_HISTORY, DEEP_HISTORY -> "history";
         };
     indent(depth).append('<').append(tag).append(" id=\"").append(escape(node.id())).append('"');
-    if (node.initial() != null) {
+    boolean initialElement = node.initial() != null && !node.defaultActions().isEmpty();
+    if (node.initial() != null && !initialElement) {
       out.append(" initial=\"").append(escape(node.initial())).append('"');
     }
     if (node.kind() == ScNode.Kind.DEEP_HISTORY) {
@@ -105,13 +108,15 @@ final class ScxmlWriter {
       return;
     }
     out.append(">\n");
+    if (initialElement) {
+      indent(depth + 1).append("<initial>\n");
+      defaultTransition(List.of(requireNonNull(node.initial())), node.defaultActions(), depth + 2);
+      indent(depth + 1).append("</initial>\n");
+    }
     content("onentry", node.onEntry(), depth + 1);
     content("onexit", node.onExit(), depth + 1);
     if (!node.historyDefault().isEmpty()) {
-      indent(depth + 1)
-          .append("<transition target=\"")
-          .append(escape(String.join(" ", node.historyDefault())))
-          .append("\"/>\n");
+      defaultTransition(node.historyDefault(), node.defaultActions(), depth + 1);
     }
     // The reader lists transitions in document order, so a state's own transitions go among its
     // children where that order puts them: before a child whose subtree has a later transition.
@@ -129,6 +134,20 @@ final class ScxmlWriter {
       transition(transitions.get(next), next + 1, depth + 1);
     }
     indent(depth).append("</").append(tag).append(">\n");
+  }
+
+  private void defaultTransition(List<String> targets, List<ScAction> actions, int depth) {
+    indent(depth)
+        .append("<transition target=\"")
+        .append(escape(String.join(" ", targets)))
+        .append('"');
+    if (actions.isEmpty()) {
+      out.append("/>\n");
+      return;
+    }
+    out.append(">\n");
+    actions(actions, depth + 1);
+    indent(depth).append("</transition>\n");
   }
 
   private void transition(ScTransition t, int n, int depth) {

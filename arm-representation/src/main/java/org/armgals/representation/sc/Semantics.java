@@ -234,15 +234,15 @@ final class Semantics {
     for (ScTransition t : ts) {
       run(t.actions(), actions, raised);
     }
-    TreeSet<Node> toEnter = new TreeSet<>(Chart.DOCUMENT_ORDER);
+    Entry toEnter = new Entry(history);
     for (ScTransition t : ts) {
       for (String id : t.targets()) {
-        addDescendants(chart.node(id, "target"), toEnter, history);
+        addDescendants(chart.node(id, "target"), toEnter);
       }
       Node domain = domain(t, history);
       if (domain != null) {
         for (Node s : effectiveTargets(t.targets(), history)) {
-          addAncestors(s, domain, toEnter, history);
+          addAncestors(s, domain, toEnter);
         }
       }
     }
@@ -252,14 +252,16 @@ final class Semantics {
 
   /** The initial entry: the states entered first, their entry actions and raised events. */
   Micro start() {
-    TreeSet<Node> toEnter = new TreeSet<>(Chart.DOCUMENT_ORDER);
     Map<String, List<String>> history = new LinkedHashMap<>();
     for (Node h : chart.histories) {
       history.put(h.id, List.of());
     }
+    Entry toEnter = new Entry(history);
     for (Node s : chart.root.initial) {
-      addDescendants(s, toEnter, history);
-      addAncestors(s, chart.root, toEnter, history);
+      addDescendants(s, toEnter);
+    }
+    for (Node s : chart.root.initial) {
+      addAncestors(s, chart.root, toEnter);
     }
     TreeSet<Node> config = new TreeSet<>(Chart.DOCUMENT_ORDER);
     List<String> actions = new ArrayList<>();
@@ -268,13 +270,32 @@ final class Semantics {
     return new Micro(configuration(config, history), List.copyOf(actions), raised, finished);
   }
 
+  /**
+   * What a microstep enters (computeEntrySet's statesToEnter, statesForDefaultEntry and
+   * defaultHistoryContent), with the history it reads.
+   */
+  private static final class Entry {
+    final TreeSet<Node> states = new TreeSet<>(Chart.DOCUMENT_ORDER);
+    final Set<Node> byDefault = new LinkedHashSet<>();
+    final Map<Node, List<ScAction>> historyContent = new LinkedHashMap<>();
+    final Map<String, List<String>> history;
+
+    Entry(Map<String, List<String>> history) {
+      this.history = history;
+    }
+  }
+
   /** Enters {@code toEnter} in document order; whether a top-level final state was entered. */
   private boolean enter(
-      TreeSet<Node> toEnter, TreeSet<Node> config, List<String> actions, List<String> raised) {
+      Entry toEnter, TreeSet<Node> config, List<String> actions, List<String> raised) {
     boolean finished = false;
-    for (Node s : toEnter) {
+    for (Node s : toEnter.states) {
       config.add(s);
       run(s.onEntry, actions, raised);
+      if (toEnter.byDefault.contains(s)) {
+        run(s.defaultActions, actions, raised);
+      }
+      run(toEnter.historyContent.getOrDefault(s, List.of()), actions, raised);
       if (s.isFinal()) {
         Node parent = requireNonNull(s.parent);
         if (parent == chart.root) {
@@ -405,51 +426,54 @@ final class Semantics {
   }
 
   /** addDescendantStatesToEnter. */
-  private void addDescendants(Node s, Set<Node> toEnter, Map<String, List<String>> history) {
+  private void addDescendants(Node s, Entry toEnter) {
     if (s.isHistory()) {
-      List<String> remembered = history.getOrDefault(s.id, List.of());
-      List<Node> targets =
-          remembered.isEmpty()
-              ? s.historyDefault
-              : new ArrayList<>(chart.nodes(remembered, "remembered state"));
+      List<String> remembered = toEnter.history.getOrDefault(s.id, List.of());
       Node parent = requireNonNull(s.parent);
-      for (Node n : targets) {
-        addDescendants(n, toEnter, history);
+      List<Node> targets;
+      if (remembered.isEmpty()) {
+        targets = s.historyDefault;
+        toEnter.historyContent.put(parent, s.defaultActions);
+      } else {
+        targets = new ArrayList<>(chart.nodes(remembered, "remembered state"));
       }
       for (Node n : targets) {
-        addAncestors(n, parent, toEnter, history);
+        addDescendants(n, toEnter);
+      }
+      for (Node n : targets) {
+        addAncestors(n, parent, toEnter);
       }
       return;
     }
-    toEnter.add(s);
+    toEnter.states.add(s);
     if (s.isCompound()) {
+      toEnter.byDefault.add(s);
       for (Node n : s.initial) {
-        addDescendants(n, toEnter, history);
+        addDescendants(n, toEnter);
       }
       for (Node n : s.initial) {
-        addAncestors(n, s, toEnter, history);
+        addAncestors(n, s, toEnter);
       }
     } else if (s.isParallel()) {
       for (Node child : s.stateChildren()) {
-        if (toEnter.stream().noneMatch(e -> e.isDescendantOf(child))) {
-          addDescendants(child, toEnter, history);
+        if (toEnter.states.stream().noneMatch(e -> e.isDescendantOf(child))) {
+          addDescendants(child, toEnter);
         }
       }
     }
   }
 
   /** addAncestorStatesToEnter: the proper ancestors of {@code s} below {@code stop}. */
-  private void addAncestors(
-      Node s, Node stop, Set<Node> toEnter, Map<String, List<String>> history) {
+  private void addAncestors(Node s, Node stop, Entry toEnter) {
     for (Node anc : s.ancestorsUpTo(stop)) {
       if (anc == chart.root) {
         break;
       }
-      toEnter.add(anc);
+      toEnter.states.add(anc);
       if (anc.isParallel()) {
         for (Node child : anc.stateChildren()) {
-          if (toEnter.stream().noneMatch(e -> e.isDescendantOf(child))) {
-            addDescendants(child, toEnter, history);
+          if (toEnter.states.stream().noneMatch(e -> e.isDescendantOf(child))) {
+            addDescendants(child, toEnter);
           }
         }
       }

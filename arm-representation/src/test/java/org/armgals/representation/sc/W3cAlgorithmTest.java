@@ -156,11 +156,34 @@ class W3cAlgorithmTest {
     passesAtStart("test417");
   }
 
-  // W3C 579: the initial transition of a state may target one of its history pseudo-states: its
-  // default the first time, what it remembers afterwards.
+  // W3C 579: "before the parent state has been visited for the first time, if a transition is
+  // executed that takes the history state as its target, the SCXML processor MUST execute any
+  // executable content in the transition after the parent state's onentry content and any content
+  // in a possible initial transition" -- the initial transition targeting the history; what it
+  // remembers afterwards.
   @Test
-  void anInitialTargetingAHistoryEntersItsDefaultThenWhatItRemembers_w3c579() {
+  void aHistorysDefaultContentRunsAfterTheParentsOnentryAndInitialContent_w3c579() {
     passesAtStart("test579");
+  }
+
+  // The same rule as actions: entry actions, then the initial transition's, then the history
+  // default's, then the entry of the state it leads to.
+  @Test
+  void theDefaultTransitionsContentRunsInTheRecommendationsOrder() {
+    Statechart chart =
+        Statechart.of(
+            ScDefinition.of(
+                "defaults",
+                ScNode.state(
+                        "P",
+                        ScNode.history("H", false, "A").onDefault(run("historyDefault")),
+                        ScNode.state("A").onEntry(run("enterA")))
+                    .withInitial("H")
+                    .onEntry(run("enterP"))
+                    .onDefault(run("initial"))));
+    assertThat(chart.initialActions())
+        .containsExactly("enterP", "initial", "historyDefault", "enterA");
+    assertThat(Scxml.read(Scxml.write(chart.definition()))).isEqualTo(chart.definition());
   }
 
   // SCION history4 and history4b: a deep history as the initial of a compound state (attribute
