@@ -111,6 +111,22 @@ class ConditionTest {
     assertThat(a.dispatch("go", Map.of("speed", 3))).extracting(Step::behavior).contains("down");
   }
 
+  // The documented limit: a replay by name has no event, so _event.name is null there.
+  @Test
+  void aReplayByNameSeesNoEventName() {
+    Statechart chart =
+        Statechart.of(
+            ScDefinition.of("named", ScNode.state("A"), ScNode.state("B"))
+                .withTransitions(
+                    ScTransition.on("t", "A", "go", "B").when("_event.name == 'go'"),
+                    ScTransition.on("u", "B", "go", "A").when("_event.name != 'go'")));
+    Activation<Configuration> model = chart.activate(chart.initialState(), chart.transitions());
+    assertThatThrownBy(() -> model.apply("t", null))
+        .isInstanceOf(org.armgals.representation.BehaviorNotApplicableException.class);
+    model.reset(new Configuration(java.util.Set.of("B"), Map.of()));
+    assertThat(model.apply("u", null).after().active()).containsExactly("A");
+  }
+
   @Test
   void aNamedGuardWinsOverTheLanguageAndAnUnknownNameIsRefused() {
     Statechart chart =

@@ -298,6 +298,19 @@ class StatechartTest {
   }
 
   @Test
+  void aConfigurationForcedWhereAnEventlessTransitionIsEnabledComesToRestAtTheNextDispatch() {
+    Statechart chart =
+        Statechart.of(
+            ScDefinition.of("rest", ScNode.state("A"), ScNode.state("B"), ScNode.state("C"))
+                .withTransitions(
+                    ScTransition.on("ab", "A", "go", "B"), ScTransition.eventless("bc", "B", "C")));
+    Activation<Configuration> a = start(chart);
+    a.reset(new Configuration(java.util.Set.of("B"), Map.of()));
+    assertThat(behaviors(a.dispatch("unknown", null))).containsExactly("bc");
+    assertThat(a.state().active()).containsExactly("C");
+  }
+
+  @Test
   void aLoopOfEventlessTransitionsIsReportedAndLeavesTheStateAlone() {
     Activation<Configuration> a =
         start(
