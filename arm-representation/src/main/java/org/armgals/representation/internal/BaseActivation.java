@@ -64,16 +64,26 @@ public abstract class BaseActivation<S extends State> implements Activation<S> {
   @Override
   public final Step<S> apply(String behavior, @Nullable Object input) {
     requireNonNull(behavior, "behavior");
-    Behavior<S> b =
-        behaviors
-            .lookup(behavior)
-            .orElseThrow(() -> new NoSuchBehaviorException(behavior, behaviors.names()));
+    Behavior<S> b = behavior(behavior);
     if (!b.isApplicable(state, input)) {
       throw new BehaviorNotApplicableException(behavior, state);
     }
     Step<S> step = b.apply(state, input);
     moveTo(step);
     return step;
+  }
+
+  /**
+   * The behavior {@code name} names, for {@link #apply}: by default the one of that name among the
+   * behaviors. A family whose steps may take several behaviors at once (a statechart's microstep)
+   * answers a behavior for such a step's name too.
+   *
+   * @throws NoSuchBehaviorException if there is none
+   */
+  protected Behavior<S> behavior(String name) {
+    return behaviors
+        .lookup(name)
+        .orElseThrow(() -> new NoSuchBehaviorException(name, behaviors.names()));
   }
 
   /**

@@ -24,6 +24,7 @@ final class Chart {
     final int depth;
     final List<ScAction> onEntry;
     final List<ScAction> onExit;
+    final List<ScAction> defaultActions;
     final List<Node> children = new ArrayList<>();
     final List<Node> initial = new ArrayList<>();
     final List<Node> historyDefault = new ArrayList<>();
@@ -39,6 +40,7 @@ final class Chart {
       this.depth = parent == null ? 0 : parent.depth + 1;
       this.onEntry = source.onEntry();
       this.onExit = source.onExit();
+      this.defaultActions = source.defaultActions();
     }
 
     boolean isHistory() {
@@ -161,9 +163,14 @@ final class Chart {
     if (node.isCompound()) {
       String initial = source.initial();
       Node target = initial == null ? node.stateChildren().get(0) : node(initial, "initial");
-      if (target.isHistory() || !target.isDescendantOf(node)) {
+      boolean legal = target.isHistory() ? target.parent == node : target.isDescendantOf(node);
+      if (!legal) {
         throw new IllegalArgumentException(
-            "initial '" + initial + "' of '" + node.id + "' is not a state inside it");
+            "initial '"
+                + initial
+                + "' of '"
+                + node.id
+                + "' is not a state inside it nor one of its history pseudo-states");
       }
       node.initial.add(target);
     }

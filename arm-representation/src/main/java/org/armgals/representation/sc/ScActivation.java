@@ -2,27 +2,27 @@ package org.armgals.representation.sc;
 
 import static java.util.Objects.requireNonNull;
 
-import java.util.ArrayDeque;
 import java.util.ArrayList;
-import java.util.Deque;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.armgals.representation.Behavior;
 import org.armgals.representation.Behaviors;
+import org.armgals.representation.NoSuchBehaviorException;
 import org.armgals.representation.RepresentationException;
 import org.armgals.representation.Step;
 import org.armgals.representation.internal.BaseActivation;
 import org.jspecify.annotations.Nullable;
 
 /**
- * A statechart run. A dispatch is one run-to-completion step: the eventless transitions the current
- * configuration enables, then the trigger's transitions, then, until nothing is left, eventless
- * transitions and the events raised on the internal queue. Each transition taken is one step.
+ * A statechart run. A dispatch is one macrostep of the W3C algorithm: the trigger's microstep, then
+ * eventless transitions and the events raised on the internal queue until nothing is left. Each
+ * microstep is one step, named by the ids of its transitions separated by spaces (one id when it
+ * takes one transition), which {@link #apply} takes again as one microstep.
  */
 final class ScActivation extends BaseActivation<Configuration> {
-  /** More transitions than this in one run-to-completion step is taken for a loop. */
-  static final int MAX_MICROSTEPS = 1_000;
+  /** More microsteps than this in one run-to-completion step is taken for a loop. */
+  static final int MAX_MICROSTEPS = Semantics.MAX_MICROSTEPS;
 
   private final StatechartImpl chart;
   // The behaviors indexed by source and id, rebuilt when harmonize replaces the behaviors.
@@ -39,23 +39,50 @@ final class ScActivation extends BaseActivation<Configuration> {
    * Runs one run-to-completion step on {@code trigger}; nothing (an empty list) when the chart has
    * finished. All or nothing: if the step loops, the state is unchanged.
    *
-   * @throws RepresentationException if the step takes more than {@value #MAX_MICROSTEPS}
-   *     transitions (a loop of eventless transitions or raised events)
+   * @throws RepresentationException if the step takes more than {@value #MAX_MICROSTEPS} microsteps
+   *     (a loop of eventless transitions or raised events)
    */
   @Override
   public List<Step<Configuration>> dispatch(String trigger, @Nullable Object input) {
     requireNonNull(trigger, "trigger");
-    Run run = new Run(input);
     if (chart.semantics.finished(state())) {
       return List.of();
     }
+    index();
+    Semantics.Run run = chart.semantics.new Run(state(), List.of(), bySource, input);
+    // A configuration the chart reached is stable; one forced by reset, or left unstable by a
+    // harmonize that added an eventless transition, comes to rest first.
     run.settle();
-    run.take(trigger);
+    run.external(trigger);
     run.settle();
-    for (Step<Configuration> step : run.steps) {
+    List<Step<Configuration>> steps = new ArrayList<>();
+    for (Semantics.Taken taken : run.taken()) {
+      steps.add(
+          new Step<>(taken.before(), taken.micro().after(), taken.name(), taken.micro().actions()));
+    }
+    for (Step<Configuration> step : steps) {
       moveTo(step);
     }
-    return List.copyOf(run.steps);
+    return List.copyOf(steps);
+  }
+
+  /** A transition's id, or the name of a microstep of several (their ids, space-separated). */
+  @Override
+  protected Behavior<Configuration> behavior(String name) {
+    List<String> ids = List.of(name.strip().split("\\s+"));
+    if (ids.size() < 2) {
+      return super.behavior(name);
+    }
+    index();
+    List<BoundTransition> parts = new ArrayList<>();
+    for (String id : ids) {
+      BoundTransition t = byId.get(id);
+      if (t == null) {
+        throw new NoSuchBehaviorException(name, behaviors().names());
+      }
+      parts.add(t);
+    }
+    return new BoundMicrostep(chart, name, parts);
   }
 
   private void index() {
@@ -72,66 +99,5 @@ final class ScActivation extends BaseActivation<Configuration> {
     bySource = sources;
     byId = ids;
     indexed = behaviors();
-  }
-
-  /** The bookkeeping of one run-to-completion step. */
-  private final class Run {
-    final @Nullable Object input;
-    final List<Step<Configuration>> steps = new ArrayList<>();
-    final Deque<String> internal = new ArrayDeque<>();
-    Configuration current = state();
-
-    Run(@Nullable Object input) {
-      this.input = input;
-      index();
-    }
-
-    /** Eventless transitions and internal events until neither is left. */
-    void settle() {
-      while (true) {
-        if (take(null)) {
-          continue;
-        }
-        String event = internal.poll();
-        if (event == null) {
-          return;
-        }
-        take(event);
-      }
-    }
-
-    /** Takes what {@code event} (null: eventless) enables; whether anything was taken. */
-    boolean take(@Nullable String event) {
-      if (chart.semantics.finished(current)) {
-        internal.clear();
-        return false;
-      }
-      boolean taken = false;
-      for (ScTransition t : chart.semantics.select(current, event, input, bySource)) {
-        BoundTransition bound = byId.get(t.id());
-        // A transition taken before may have made a later one of the same microstep inapplicable
-        // (a guard on another region): each is checked against the configuration it leaves, so
-        // that replaying the steps one by one gives the same result.
-        if (bound == null || !bound.isApplicable(current, input)) {
-          continue;
-        }
-        if (steps.size() >= MAX_MICROSTEPS) {
-          throw new RepresentationException(
-              "a run-to-completion step took more than "
-                  + MAX_MICROSTEPS
-                  + " transitions, the last "
-                  + steps.subList(steps.size() - 3, steps.size()).stream()
-                      .map(Step::behavior)
-                      .toList()
-                  + "; expected eventless transitions and raised events to come to rest");
-        }
-        Semantics.Micro micro = bound.micro(current, input);
-        steps.add(bound.step(current, micro));
-        internal.addAll(micro.raised());
-        current = micro.after();
-        taken = true;
-      }
-      return taken;
-    }
   }
 }

@@ -11,19 +11,24 @@ import org.jspecify.annotations.Nullable;
  * {@code <history>} in SCXML) with its children.
  *
  * <p>A {@link Kind#STATE} with state children is compound: it enters {@link #initial()} (its first
- * child when null) by default; without them it is atomic. A {@link Kind#PARALLEL} has orthogonal
- * regions, all active together. A history pseudo-state remembers the active children ({@link
- * Kind#SHALLOW_HISTORY}) or atomic descendants ({@link Kind#DEEP_HISTORY}) of its parent when the
- * parent is exited; a transition to it restores them, or enters {@link #historyDefault()} (its
- * parent's initial state when empty) the first time.
+ * child when null; a history child enters what the history says) by default; without them it is
+ * atomic. A {@link Kind#PARALLEL} has orthogonal regions, all active together. A history
+ * pseudo-state remembers the active children ({@link Kind#SHALLOW_HISTORY}) or atomic descendants
+ * ({@link Kind#DEEP_HISTORY}) of its parent when the parent is exited; a transition to it restores
+ * them, or enters {@link #historyDefault()} (its parent's initial state when empty) the first time.
  *
  * @param id unique in the chart
  * @param kind what the node is
- * @param initial for a compound state, the descendant entered by default; null for its first child
+ * @param initial for a compound state, the descendant (or history child) entered by default; null
+ *     for its first child
  * @param onEntry actions on entry, in order
  * @param onExit actions on exit, in order
  * @param historyDefault for a history pseudo-state, where it leads before anything is remembered
  * @param children sub-states and history pseudo-states, in document order
+ * @param defaultActions the content of the default transition: for a compound state with an {@code
+ *     initial}, that of its {@code <initial>} transition, run after its entry actions when it is
+ *     entered by default; for a history with a default, that of its default transition, run after
+ *     its parent's entry actions when the default is taken
  */
 public record ScNode(
     String id,
@@ -32,7 +37,8 @@ public record ScNode(
     List<ScAction> onEntry,
     List<ScAction> onExit,
     List<String> historyDefault,
-    List<ScNode> children) {
+    List<ScNode> children,
+    List<ScAction> defaultActions) {
 
   /** What a node is. */
   public enum Kind {
@@ -67,6 +73,7 @@ public record ScNode(
     onExit = List.copyOf(requireNonNull(onExit, "onExit"));
     historyDefault = ScNames.requireNames(historyDefault, "history default of '" + id + "'");
     children = List.copyOf(requireNonNull(children, "children"));
+    defaultActions = List.copyOf(requireNonNull(defaultActions, "defaultActions"));
     if ((kind == Kind.FINAL || kind.isHistory()) && !children.isEmpty()) {
       throw new IllegalArgumentException(kind + " '" + id + "' has children; expected none");
     }
@@ -77,6 +84,14 @@ public record ScNode(
       throw new IllegalArgumentException(
           kind + " '" + id + "' has a history default; only a history has one");
     }
+    if (!defaultActions.isEmpty() && initial == null && historyDefault.isEmpty()) {
+      throw new IllegalArgumentException(
+          kind
+              + " '"
+              + id
+              + "' has default actions; only a state with an initial or a history with a default"
+              + " has them");
+    }
     if (initial != null) {
       ScNames.requireName(initial, "initial of '" + id + "'");
       if (kind != Kind.STATE || children.stream().allMatch(c -> c.kind().isHistory())) {
@@ -84,6 +99,18 @@ public record ScNode(
             kind + " '" + id + "' has initial '" + initial + "'; only a compound state has one");
       }
     }
+  }
+
+  /** A node without default actions. */
+  public ScNode(
+      String id,
+      Kind kind,
+      @Nullable String initial,
+      List<ScAction> onEntry,
+      List<ScAction> onExit,
+      List<String> historyDefault,
+      List<ScNode> children) {
+    this(id, kind, initial, onEntry, onExit, historyDefault, children, List.of());
   }
 
   /** A state: atomic without children, compound with them. */
@@ -117,16 +144,41 @@ public record ScNode(
 
   /** This node with {@code initial} as its default descendant. */
   public ScNode withInitial(String initial) {
-    return new ScNode(id, kind, initial, onEntry, onExit, historyDefault, children);
+    return new ScNode(id, kind, initial, onEntry, onExit, historyDefault, children, defaultActions);
   }
 
   /** This node with {@code actions} on entry. */
   public ScNode onEntry(ScAction... actions) {
-    return new ScNode(id, kind, initial, Arrays.asList(actions), onExit, historyDefault, children);
+    return new ScNode(
+        id,
+        kind,
+        initial,
+        Arrays.asList(actions),
+        onExit,
+        historyDefault,
+        children,
+        defaultActions);
   }
 
   /** This node with {@code actions} on exit. */
   public ScNode onExit(ScAction... actions) {
-    return new ScNode(id, kind, initial, onEntry, Arrays.asList(actions), historyDefault, children);
+    return new ScNode(
+        id,
+        kind,
+        initial,
+        onEntry,
+        Arrays.asList(actions),
+        historyDefault,
+        children,
+        defaultActions);
+  }
+
+  /**
+   * This node with {@code actions} as the content of its default transition (its {@code <initial>}
+   * transition, or its default as a history).
+   */
+  public ScNode onDefault(ScAction... actions) {
+    return new ScNode(
+        id, kind, initial, onEntry, onExit, historyDefault, children, Arrays.asList(actions));
   }
 }

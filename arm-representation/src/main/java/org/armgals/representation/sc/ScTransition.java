@@ -19,7 +19,9 @@ import org.jspecify.annotations.Nullable;
  * @param id unique in its behaviors; what an action event carries
  * @param source the id of the state it leaves
  * @param events event descriptors; empty for an eventless transition
- * @param cond the name of a {@link Guard}, or {@code In(id)}; null when always enabled
+ * @param cond the name of a {@link Guard}, or a condition of the condition language ({@code
+ *     In('id')}, {@code true}, comparisons of {@code _event.name} and {@code _event.data} fields:
+ *     docs/representations.md); null when always enabled
  * @param targets ids of the states it enters
  * @param internal whether it is internal (SCXML {@code type="internal"})
  * @param actions its own actions, run between the exits and the entries

@@ -14,7 +14,10 @@ import java.io.StringReader;
  *
  * <p>Transitions get their id from an {@code arm:id} attribute, or else {@code source#n}, the n-th
  * transition of its source (from 1). {@link #write} writes {@code arm:id} only where the id is not
- * that default, so that {@code read(write(d))} equals {@code d} for every {@code d} read.
+ * that default, and puts each state's transitions among its children where the definition's order
+ * of transitions (document order, for a definition read) places them, so that {@code
+ * read(write(d))} equals {@code d} for every {@code d} read. A definition built in Java whose
+ * transitions are in another order comes back with them in document order.
  */
 public final class Scxml {
   /** The SCXML namespace. */

@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.Supplier;
+import java.util.regex.Pattern;
 import javax.xml.XMLConstants;
 import javax.xml.parsers.ParserConfigurationException;
 import javax.xml.parsers.SAXParserFactory;
@@ -23,9 +24,12 @@ import org.xml.sax.helpers.DefaultHandler;
 final class ScxmlReader {
   private ScxmlReader() {}
 
-  /** An element as parsed: namespace, local name, attributes, children, line. */
+  /**
+   * An element as parsed: namespace, local name, attributes, children, line, and the line of the
+   * first text it holds directly (-1 for none; white space is not text).
+   */
   private record El(
-      String ns, String name, Map<String, String> attrs, List<El> children, int line) {
+      String ns, String name, Map<String, String> attrs, List<El> children, int line, int[] text) {
     String tag() {
       return ns.equals(Scxml.ARM_NAMESPACE) ? "arm:" + name : name;
     }
@@ -42,7 +46,12 @@ final class ScxmlReader {
       return value.strip();
     }
 
+    /** Refuses attributes other than {@code keys}, and text: every supported element says so. */
     void allow(String... keys) {
+      if (text[0] >= 0) {
+        throw new ScxmlException(
+            "text in <" + tag() + "> is not supported; expected elements only", text[0]);
+      }
       Set<String> allowed = Set.of(keys);
       for (String key : attrs.keySet()) {
         if (!allowed.contains(key)) {
@@ -76,7 +85,7 @@ final class ScxmlReader {
         String name = attributes.getLocalName(i);
         attrs.put(ns.equals(Scxml.ARM_NAMESPACE) ? "arm:" + name : name, attributes.getValue(i));
       }
-      El el = new El(uri, local, attrs, new ArrayList<>(), line());
+      El el = new El(uri, local, attrs, new ArrayList<>(), line(), new int[] {-1});
       if (stack.isEmpty()) {
         root = el;
       } else {
@@ -92,11 +101,14 @@ final class ScxmlReader {
 
     @Override
     public void characters(char[] ch, int start, int length) {
-      if (!new String(ch, start, length).isBlank()) {
-        String where =
-            stack.isEmpty() ? "the document" : "<" + stack.get(stack.size() - 1).tag() + ">";
-        throw new ScxmlException(
-            "text in " + where + " is not supported; expected elements only", line());
+      // Text is refused when its element is converted, so that an unsupported element holding
+      // text (<data>, <content>, <script>) is refused as such, and text in a supported one is
+      // named with its element.
+      if (!stack.isEmpty() && !new String(ch, start, length).isBlank()) {
+        int[] text = stack.get(stack.size() - 1).text();
+        if (text[0] < 0) {
+          text[0] = line();
+        }
       }
     }
   }
@@ -121,6 +133,9 @@ final class ScxmlReader {
     return new ScxmlReader.Conversion().definition(root);
   }
 
+  /** What a guard's name looks like in {@code cond}: a Java identifier. */
+  private static final Pattern GUARD_NAME = Pattern.compile("[A-Za-z_$][A-Za-z0-9_$]*");
+
   /** From parsed elements to the definition's records. */
   private static final class Conversion {
     private final List<ScTransition> transitions = new ArrayList<>();
@@ -138,9 +153,12 @@ final class ScxmlReader {
       }
       scxml.allow("initial", "name", "version", "datamodel");
       String datamodel = scxml.attr("datamodel");
-      if (datamodel != null && !datamodel.strip().equals("null")) {
+      if (datamodel != null && !Set.of("null", "ecmascript").contains(datamodel.strip())) {
         throw new ScxmlException(
-            "datamodel '" + datamodel + "' is not supported; expected none or 'null'",
+            "datamodel '"
+                + datamodel
+                + "' is not supported; expected none, 'null' or 'ecmascript' (whose conditions"
+                + " must then be in the condition language)",
             scxml.line());
       }
       String version = scxml.attr("version");
@@ -178,6 +196,7 @@ final class ScxmlReader {
       List<ScAction> onEntry = new ArrayList<>();
       List<ScAction> onExit = new ArrayList<>();
       List<String> historyDefault = new ArrayList<>();
+      List<ScAction> defaultActions = new ArrayList<>();
       List<ScNode> children = new ArrayList<>();
       int transitionCount = 0;
       for (El child : el.children()) {
@@ -208,6 +227,7 @@ final class ScxmlReader {
                   child.line());
             }
             initial = initialChild(child);
+            defaultActions.addAll(content(child.children().get(0)));
           }
           case "history/transition" -> {
             if (!historyDefault.isEmpty()) {
@@ -216,6 +236,7 @@ final class ScxmlReader {
                   child.line());
             }
             historyDefault.addAll(targetOnly(child));
+            defaultActions.addAll(content(child));
           }
           default ->
               throw unsupported(child, "what SCXML allows in <" + kind + "> among the subset");
@@ -229,7 +250,9 @@ final class ScxmlReader {
             default -> historyKind(el);
           };
       String init = initial;
-      return guarded(el, () -> new ScNode(id, k, init, onEntry, onExit, historyDefault, children));
+      return guarded(
+          el,
+          () -> new ScNode(id, k, init, onEntry, onExit, historyDefault, children, defaultActions));
     }
 
     private static ScNode.Kind historyKind(El el) {
@@ -259,14 +282,12 @@ final class ScxmlReader {
       return targets.get(0);
     }
 
-    /** The targets of a transition that may hold nothing else (in initial and history). */
+    /**
+     * The targets of a default transition (in initial and history), which has no event, condition
+     * or type; its content is read by {@link #content}.
+     */
     private static List<String> targetOnly(El transition) {
       transition.allow("target");
-      if (!transition.children().isEmpty()) {
-        throw new ScxmlException(
-            "executable content in this <transition> is not supported; expected a target only",
-            transition.line());
-      }
       return List.of(transition.required("target").split("\\s+"));
     }
 
@@ -287,7 +308,7 @@ final class ScxmlReader {
             el.line());
       }
       List<ScAction> actions = content(el);
-      String cond = el.attr("cond");
+      String cond = condition(el);
       return guarded(
           el,
           () ->
@@ -299,6 +320,30 @@ final class ScxmlReader {
                   tokens(target),
                   internal,
                   actions));
+    }
+
+    /**
+     * The {@code cond} of a transition, if it is in the condition language or the name of a guard;
+     * anything else (an ECMAScript expression beyond the language) is refused here, with the
+     * construct and the line.
+     */
+    private static @Nullable String condition(El transition) {
+      String cond = transition.attr("cond");
+      if (cond == null) {
+        return null;
+      }
+      String text = cond.strip();
+      try {
+        Condition.parse(text);
+      } catch (IllegalArgumentException e) {
+        if (!GUARD_NAME.matcher(text).matches()) {
+          throw new ScxmlException(
+              "cond of <transition> is neither a guard's name nor in the condition language: "
+                  + e.getMessage(),
+              transition.line());
+        }
+      }
+      return text;
     }
 
     private static List<String> tokens(@Nullable String value) {

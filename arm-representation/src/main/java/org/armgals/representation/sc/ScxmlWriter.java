@@ -1,5 +1,7 @@
 package org.armgals.representation.sc;
 
+import static java.util.Objects.requireNonNull;
+
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
@@ -11,11 +13,28 @@ import java.util.Set;
 final class ScxmlWriter {
   private final StringBuilder out = new StringBuilder();
   private final Map<String, List<ScTransition>> bySource = new LinkedHashMap<>();
+  // The place of each source's transitions in the definition's list, in the same order.
+  private final Map<String, List<Integer>> places = new LinkedHashMap<>();
 
   private ScxmlWriter(ScDefinition definition) {
-    for (ScTransition t : definition.transitions()) {
+    List<ScTransition> all = definition.transitions();
+    for (int i = 0; i < all.size(); i++) {
+      ScTransition t = all.get(i);
       bySource.computeIfAbsent(t.source(), s -> new ArrayList<>()).add(t);
+      places.computeIfAbsent(t.source(), s -> new ArrayList<>()).add(i);
     }
+  }
+
+  /** The first place of a transition leaving {@code node} or a descendant; -1 for none. */
+  private int first(ScNode node) {
+    int min = places.getOrDefault(node.id(), List.of(-1)).get(0);
+    for (ScNode child : node.children()) {
+      int c = first(child);
+      if (c >= 0 && (min < 0 || c < min)) {
+        min = c;
+      }
+    }
+    return min;
   }
 
   static String write(ScDefinition definition) {
@@ -70,7 +89,8 @@ final class ScxmlWriter {
           case SHALLOW_HISTORY, DEEP_HISTORY -> "history";
         };
     indent(depth).append('<').append(tag).append(" id=\"").append(escape(node.id())).append('"');
-    if (node.initial() != null) {
+    boolean initialElement = node.initial() != null && !node.defaultActions().isEmpty();
+    if (node.initial() != null && !initialElement) {
       out.append(" initial=\"").append(escape(node.initial())).append('"');
     }
     if (node.kind() == ScNode.Kind.DEEP_HISTORY) {
@@ -88,21 +108,46 @@ final class ScxmlWriter {
       return;
     }
     out.append(">\n");
+    if (initialElement) {
+      indent(depth + 1).append("<initial>\n");
+      defaultTransition(List.of(requireNonNull(node.initial())), node.defaultActions(), depth + 2);
+      indent(depth + 1).append("</initial>\n");
+    }
     content("onentry", node.onEntry(), depth + 1);
     content("onexit", node.onExit(), depth + 1);
     if (!node.historyDefault().isEmpty()) {
-      indent(depth + 1)
-          .append("<transition target=\"")
-          .append(escape(String.join(" ", node.historyDefault())))
-          .append("\"/>\n");
+      defaultTransition(node.historyDefault(), node.defaultActions(), depth + 1);
     }
-    for (int i = 0; i < transitions.size(); i++) {
-      transition(transitions.get(i), i + 1, depth + 1);
-    }
+    // The reader lists transitions in document order, so a state's own transitions go among its
+    // children where that order puts them: before a child whose subtree has a later transition.
+    List<Integer> own = places.getOrDefault(node.id(), List.of());
+    int next = 0;
     for (ScNode child : node.children()) {
+      int c = first(child);
+      while (c >= 0 && next < transitions.size() && own.get(next) < c) {
+        transition(transitions.get(next), next + 1, depth + 1);
+        next++;
+      }
       node(child, depth + 1);
     }
+    for (; next < transitions.size(); next++) {
+      transition(transitions.get(next), next + 1, depth + 1);
+    }
     indent(depth).append("</").append(tag).append(">\n");
+  }
+
+  private void defaultTransition(List<String> targets, List<ScAction> actions, int depth) {
+    indent(depth)
+        .append("<transition target=\"")
+        .append(escape(String.join(" ", targets)))
+        .append('"');
+    if (actions.isEmpty()) {
+      out.append("/>\n");
+      return;
+    }
+    out.append(">\n");
+    actions(actions, depth + 1);
+    indent(depth).append("</transition>\n");
   }
 
   private void transition(ScTransition t, int n, int depth) {

@@ -2,39 +2,49 @@ package org.armgals.representation.sc;
 
 import static java.util.Objects.requireNonNull;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collection;
+import java.util.Deque;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
+import java.util.concurrent.ConcurrentHashMap;
+import org.armgals.representation.RepresentationException;
 import org.armgals.representation.sc.Chart.Node;
 import org.jspecify.annotations.Nullable;
 
 /**
- * The step semantics of a chart, after the algorithm of the W3C SCXML recommendation (appendix D):
- * transition selection with priority to descendants, conflict removal, exit and entry sets with
- * history, done events. Pure: every method answers new values.
+ * The step semantics of a chart: the algorithm of the W3C SCXML recommendation (appendix D) for the
+ * supported subset. A microstep takes a set of transitions at once (all exits, then every
+ * transition's content in order, then all entries); a macrostep ({@link Run}) takes eventless
+ * transitions and the internal queue's events to completion. Pure: every method answers new values;
+ * a {@link Run} is confined to the thread that made it.
  */
 final class Semantics {
-  private static final Pattern IN = Pattern.compile("In\\(\\s*'?([^'()\\s]+)'?\\s*\\)");
+  /** More microsteps than this in one macrostep is taken for a loop. */
+  static final int MAX_MICROSTEPS = 1_000;
 
-  /** What one transition did: where it led, the actions to run, the events it raised. */
-  record Micro(Configuration after, List<String> actions, List<String> raised) {}
+  /**
+   * What one microstep did: where it led, the actions to run (exits, transition content, entries;
+   * then, when it finished the chart, the exits of the states still active), the events it put on
+   * the internal queue (raised ones and done events, in order), whether it finished the chart.
+   */
+  record Micro(Configuration after, List<String> actions, List<String> raised, boolean finished) {}
 
   final Chart chart;
   private final Map<String, Guard> guards;
+  private final Map<String, Condition> conditions = new ConcurrentHashMap<>();
 
   Semantics(Chart chart, Map<String, Guard> guards) {
     this.chart = chart;
     this.guards = Map.copyOf(guards);
   }
 
-  /** Checks that {@code t} fits the chart: its source, targets and guard exist. */
+  /** Checks that {@code t} fits the chart: its source, targets and condition exist. */
   void check(ScTransition t) {
     Node source = chart.node(t.source(), "source of transition '" + t.id() + "'");
     if (source.isHistory() || source.isFinal()) {
@@ -51,33 +61,53 @@ final class Semantics {
       chart.node(target, "target of transition '" + t.id() + "'");
     }
     String cond = t.cond();
-    if (cond != null) {
-      Matcher in = IN.matcher(cond);
-      if (in.matches()) {
-        chart.node(in.group(1), "In() of transition '" + t.id() + "'");
-      } else if (!guards.containsKey(cond)) {
+    if (cond != null && !guards.containsKey(cond)) {
+      Condition c;
+      try {
+        c = condition(cond);
+      } catch (IllegalArgumentException e) {
         throw new IllegalArgumentException(
             "transition '"
                 + t.id()
                 + "' is guarded by '"
                 + cond
-                + "', which is not a guard; guards: "
+                + "', which is not a guard (guards: "
                 + guards.keySet()
-                + " or In(stateId)");
+                + ") nor a condition: "
+                + e.getMessage(),
+            e);
+      }
+      for (String id : c.states()) {
+        chart.node(id, "In() of transition '" + t.id() + "'");
       }
     }
   }
 
-  boolean guardHolds(ScTransition t, Configuration c, @Nullable Object input) {
+  private Condition condition(String cond) {
+    Condition c = conditions.get(cond);
+    if (c == null) {
+      c = Condition.parse(cond);
+      conditions.put(cond, c);
+    }
+    return c;
+  }
+
+  /**
+   * Whether the condition of {@code t} holds in {@code c}, the current event being {@code
+   * eventName} (null when unknown: before the first event, or in a replay by name) with the
+   * trigger's {@code input} as its data.
+   */
+  boolean holds(
+      ScTransition t, Configuration c, @Nullable String eventName, @Nullable Object input) {
     String cond = t.cond();
     if (cond == null) {
       return true;
     }
-    Matcher in = IN.matcher(cond);
-    if (in.matches()) {
-      return c.isActive(in.group(1));
+    Guard g = guards.get(cond);
+    if (g != null) {
+      return g.test(c, input);
     }
-    return requireNonNull(guards.get(cond), cond).test(c, input);
+    return condition(cond).holds(new Condition.Context(c, eventName, input));
   }
 
   static boolean matches(ScTransition t, @Nullable String event) {
@@ -107,13 +137,16 @@ final class Semantics {
   }
 
   /**
-   * The transitions {@code event} (null: eventless) enables in {@code c}, in the order they are
-   * taken: for each active atomic state in document order, the first enabled transition of the
-   * state or its nearest ancestor; then conflicts removed, a transition from a descendant winning.
+   * The optimal enabled transition set of {@code event} (null: the eventless transitions) in {@code
+   * c} (selectTransitions and selectEventlessTransitions): for each active atomic state in document
+   * order, the first transition of the state or of its nearest ancestor that matches and whose
+   * condition holds; then conflicts removed, a transition from a descendant winning. Conditions see
+   * {@code eventName}, the current event.
    */
   List<ScTransition> select(
       Configuration c,
       @Nullable String event,
+      @Nullable String eventName,
       @Nullable Object input,
       Map<String, List<ScTransition>> bySource) {
     Set<ScTransition> enabled = new LinkedHashSet<>();
@@ -127,7 +160,7 @@ final class Semantics {
       search:
       for (Node s : candidates) {
         for (ScTransition t : bySource.getOrDefault(s.id, List.of())) {
-          if (matches(t, event) && guardHolds(t, c, input)) {
+          if (matches(t, event) && holds(t, c, eventName, input)) {
             enabled.add(t);
             break search;
           }
@@ -137,15 +170,16 @@ final class Semantics {
     return withoutConflicts(enabled, c);
   }
 
-  private List<ScTransition> withoutConflicts(Collection<ScTransition> enabled, Configuration c) {
+  /** removeConflictingTransitions: of two whose exit sets meet, the one from a descendant stays. */
+  List<ScTransition> withoutConflicts(Collection<ScTransition> enabled, Configuration c) {
     List<ScTransition> filtered = new ArrayList<>();
     for (ScTransition t1 : enabled) {
       boolean preempted = false;
       List<ScTransition> toRemove = new ArrayList<>();
-      Set<Node> exit1 = exitSet(t1, c);
+      Set<Node> exit1 = exitSet(t1, c.active(), c.history());
       for (ScTransition t2 : filtered) {
         Set<Node> both = new LinkedHashSet<>(exit1);
-        both.retainAll(exitSet(t2, c));
+        both.retainAll(exitSet(t2, c.active(), c.history()));
         if (!both.isEmpty()) {
           if (chart.node(t1.source(), "source").isDescendantOf(chart.node(t2.source(), "source"))) {
             toRemove.add(t2);
@@ -163,83 +197,116 @@ final class Semantics {
     return filtered;
   }
 
-  /** Takes {@code t} in {@code c}: exits, the transition's actions, entries. */
-  Micro microstep(ScTransition t, Configuration c) {
-    TreeSet<Node> active = chart.nodes(c.active(), "active state");
+  /**
+   * Takes the transitions {@code ts} together in {@code c} (microstep): records history and exits
+   * the union of their exit sets, innermost first; runs their content in order; enters the union of
+   * their entry sets in document order.
+   */
+  Micro microstep(List<ScTransition> ts, Configuration c) {
+    TreeSet<Node> config = chart.nodes(c.active(), "active state");
     Map<String, List<String>> history = new LinkedHashMap<>(c.history());
     List<String> actions = new ArrayList<>();
     List<String> raised = new ArrayList<>();
-    Node domain = t.targets().isEmpty() ? null : domain(t, c);
-    if (domain != null) {
-      List<Node> exits = new ArrayList<>(active.descendingSet());
-      exits.removeIf(n -> !n.isDescendantOf(domain));
-      for (Node s : exits) {
-        for (Node h : s.historyChildren()) {
-          List<Node> remembered = new ArrayList<>();
-          for (Node a : active) {
-            boolean kept =
-                h.kind == ScNode.Kind.DEEP_HISTORY
-                    ? a.isAtomic() && a.isDescendantOf(s)
-                    : a.parent == s;
-            if (kept) {
-              remembered.add(a);
-            }
+    TreeSet<Node> exits = new TreeSet<>(Chart.DOCUMENT_ORDER);
+    for (ScTransition t : ts) {
+      exits.addAll(exitSet(t, c.active(), c.history()));
+    }
+    List<Node> exitOrder = new ArrayList<>(exits.descendingSet());
+    for (Node s : exitOrder) {
+      for (Node h : s.historyChildren()) {
+        List<Node> remembered = new ArrayList<>();
+        for (Node a : config) {
+          boolean kept =
+              h.kind == ScNode.Kind.DEEP_HISTORY
+                  ? a.isAtomic() && a.isDescendantOf(s)
+                  : a.parent == s;
+          if (kept) {
+            remembered.add(a);
           }
-          history.put(h.id, Chart.ids(remembered));
+        }
+        history.put(h.id, Chart.ids(remembered));
+      }
+    }
+    for (Node s : exitOrder) {
+      run(s.onExit, actions, raised);
+      config.remove(s);
+    }
+    for (ScTransition t : ts) {
+      run(t.actions(), actions, raised);
+    }
+    Entry toEnter = new Entry(history);
+    for (ScTransition t : ts) {
+      for (String id : t.targets()) {
+        addDescendants(chart.node(id, "target"), toEnter);
+      }
+      Node domain = domain(t, history);
+      if (domain != null) {
+        for (Node s : effectiveTargets(t.targets(), history)) {
+          addAncestors(s, domain, toEnter);
         }
       }
-      for (Node s : exits) {
-        run(s.onExit, actions, raised);
-        active.remove(s);
-      }
     }
-    run(t.actions(), actions, raised);
-    if (domain != null) {
-      TreeSet<Node> toEnter = new TreeSet<>(Chart.DOCUMENT_ORDER);
-      for (String id : t.targets()) {
-        addDescendants(chart.node(id, "target"), toEnter, history);
-      }
-      for (Node s : effectiveTargets(t.targets(), history)) {
-        addAncestors(s, domain, toEnter, history);
-      }
-      enter(toEnter, active, actions, raised);
-    }
-    return new Micro(configuration(active, history), List.copyOf(actions), List.copyOf(raised));
+    boolean finished = enter(toEnter, config, actions, raised);
+    return new Micro(configuration(config, history), List.copyOf(actions), raised, finished);
   }
 
-  /** The initial configuration, and the entry actions that entering it runs. */
-  Micro initial() {
-    TreeSet<Node> toEnter = new TreeSet<>(Chart.DOCUMENT_ORDER);
+  /** The initial entry: the states entered first, their entry actions and raised events. */
+  Micro start() {
     Map<String, List<String>> history = new LinkedHashMap<>();
     for (Node h : chart.histories) {
       history.put(h.id, List.of());
     }
+    Entry toEnter = new Entry(history);
     for (Node s : chart.root.initial) {
-      addDescendants(s, toEnter, history);
-      addAncestors(s, chart.root, toEnter, history);
+      addDescendants(s, toEnter);
     }
-    TreeSet<Node> active = new TreeSet<>(Chart.DOCUMENT_ORDER);
+    for (Node s : chart.root.initial) {
+      addAncestors(s, chart.root, toEnter);
+    }
+    TreeSet<Node> config = new TreeSet<>(Chart.DOCUMENT_ORDER);
     List<String> actions = new ArrayList<>();
-    // Done events of the initial entry are not raised: the initial configuration is taken as
-    // stable (docs/representations.md).
-    enter(toEnter, active, actions, new ArrayList<>());
-    return new Micro(configuration(active, history), List.copyOf(actions), List.of());
+    List<String> raised = new ArrayList<>();
+    boolean finished = enter(toEnter, config, actions, raised);
+    return new Micro(configuration(config, history), List.copyOf(actions), raised, finished);
   }
 
-  private void enter(
-      TreeSet<Node> toEnter, TreeSet<Node> active, List<String> actions, List<String> raised) {
-    for (Node s : toEnter) {
-      active.add(s);
+  /**
+   * What a microstep enters (computeEntrySet's statesToEnter, statesForDefaultEntry and
+   * defaultHistoryContent), with the history it reads.
+   */
+  private static final class Entry {
+    final TreeSet<Node> states = new TreeSet<>(Chart.DOCUMENT_ORDER);
+    final Set<Node> byDefault = new LinkedHashSet<>();
+    final Map<Node, List<ScAction>> historyContent = new LinkedHashMap<>();
+    final Map<String, List<String>> history;
+
+    Entry(Map<String, List<String>> history) {
+      this.history = history;
+    }
+  }
+
+  /** Enters {@code toEnter} in document order; whether a top-level final state was entered. */
+  private boolean enter(
+      Entry toEnter, TreeSet<Node> config, List<String> actions, List<String> raised) {
+    boolean finished = false;
+    for (Node s : toEnter.states) {
+      config.add(s);
       run(s.onEntry, actions, raised);
+      if (toEnter.byDefault.contains(s)) {
+        run(s.defaultActions, actions, raised);
+      }
+      run(toEnter.historyContent.getOrDefault(s, List.of()), actions, raised);
       if (s.isFinal()) {
         Node parent = requireNonNull(s.parent);
-        if (parent != chart.root) {
+        if (parent == chart.root) {
+          finished = true;
+        } else {
           raised.add("done.state." + parent.id);
           Node grand = parent.parent;
           if (grand != null && grand.isParallel()) {
             boolean all = true;
             for (Node region : grand.stateChildren()) {
-              all &= inFinalState(region, active);
+              all &= inFinalState(region, config);
             }
             if (all) {
               raised.add("done.state." + grand.id);
@@ -248,6 +315,14 @@ final class Semantics {
         }
       }
     }
+    if (finished) {
+      // exitInterpreter: the states still active are exited, innermost first; the configuration
+      // keeps them, so that the finished chart shows where it ended.
+      for (Node s : config.descendingSet()) {
+        run(s.onExit, actions, new ArrayList<>());
+      }
+    }
+    return finished;
   }
 
   private static boolean inFinalState(Node s, Set<Node> active) {
@@ -283,14 +358,15 @@ final class Semantics {
     return new Configuration(new LinkedHashSet<>(Chart.ids(active)), history);
   }
 
-  /** The active states {@code t} exits in {@code c}, in document order. */
-  Set<Node> exitSet(ScTransition t, Configuration c) {
+  /** The active states {@code t} exits (computeExitSet), in document order. */
+  private Set<Node> exitSet(
+      ScTransition t, Collection<String> active, Map<String, List<String>> history) {
     Set<Node> exits = new LinkedHashSet<>();
-    if (t.targets().isEmpty()) {
+    Node domain = domain(t, history);
+    if (domain == null) {
       return exits;
     }
-    Node domain = domain(t, c);
-    for (Node n : chart.nodes(c.active(), "active state")) {
+    for (Node n : chart.nodes(active, "active state")) {
       if (n.isDescendantOf(domain)) {
         exits.add(n);
       }
@@ -298,9 +374,15 @@ final class Semantics {
     return exits;
   }
 
-  /** The state whose descendants {@code t} exits and enters (SCXML's transition domain). */
-  private Node domain(ScTransition t, Configuration c) {
-    List<Node> targets = effectiveTargets(t.targets(), c.history());
+  /**
+   * The state whose descendants {@code t} exits and enters (getTransitionDomain); null for a
+   * targetless transition.
+   */
+  private @Nullable Node domain(ScTransition t, Map<String, List<String>> history) {
+    List<Node> targets = effectiveTargets(t.targets(), history);
+    if (targets.isEmpty()) {
+      return null;
+    }
     Node source = chart.node(t.source(), "source");
     if (t.internal() && source.isCompound()) {
       boolean inside = true;
@@ -311,7 +393,7 @@ final class Semantics {
         return source;
       }
     }
-    // The least common compound ancestor of the source and the targets.
+    // findLCCA: the least common compound ancestor of the source and the targets.
     for (Node anc : source.ancestorsUpTo(null)) {
       if (anc != chart.root && !anc.isCompound()) {
         continue;
@@ -327,6 +409,7 @@ final class Semantics {
     return chart.root;
   }
 
+  /** getEffectiveTargetStates: a history stands for what it remembers, or for its default. */
   private List<Node> effectiveTargets(List<String> ids, Map<String, List<String>> history) {
     List<Node> result = new ArrayList<>();
     for (String id : ids) {
@@ -342,51 +425,155 @@ final class Semantics {
     return result;
   }
 
-  private void addDescendants(Node s, Set<Node> toEnter, Map<String, List<String>> history) {
+  /** addDescendantStatesToEnter. */
+  private void addDescendants(Node s, Entry toEnter) {
     if (s.isHistory()) {
-      List<String> remembered = history.getOrDefault(s.id, List.of());
-      List<Node> targets =
-          remembered.isEmpty()
-              ? s.historyDefault
-              : new ArrayList<>(chart.nodes(remembered, "remembered state"));
+      List<String> remembered = toEnter.history.getOrDefault(s.id, List.of());
       Node parent = requireNonNull(s.parent);
-      for (Node n : targets) {
-        addDescendants(n, toEnter, history);
+      List<Node> targets;
+      if (remembered.isEmpty()) {
+        targets = s.historyDefault;
+        toEnter.historyContent.put(parent, s.defaultActions);
+      } else {
+        targets = new ArrayList<>(chart.nodes(remembered, "remembered state"));
       }
       for (Node n : targets) {
-        addAncestors(n, parent, toEnter, history);
+        addDescendants(n, toEnter);
+      }
+      for (Node n : targets) {
+        addAncestors(n, parent, toEnter);
       }
       return;
     }
-    toEnter.add(s);
+    toEnter.states.add(s);
     if (s.isCompound()) {
+      toEnter.byDefault.add(s);
       for (Node n : s.initial) {
-        addDescendants(n, toEnter, history);
-        addAncestors(n, s, toEnter, history);
+        addDescendants(n, toEnter);
+      }
+      for (Node n : s.initial) {
+        addAncestors(n, s, toEnter);
       }
     } else if (s.isParallel()) {
-      for (Node region : s.stateChildren()) {
-        if (toEnter.stream().noneMatch(e -> e == region || e.isDescendantOf(region))) {
-          addDescendants(region, toEnter, history);
+      for (Node child : s.stateChildren()) {
+        if (toEnter.states.stream().noneMatch(e -> e.isDescendantOf(child))) {
+          addDescendants(child, toEnter);
         }
       }
     }
   }
 
-  private void addAncestors(
-      Node s, Node stop, Set<Node> toEnter, Map<String, List<String>> history) {
+  /** addAncestorStatesToEnter: the proper ancestors of {@code s} below {@code stop}. */
+  private void addAncestors(Node s, Node stop, Entry toEnter) {
     for (Node anc : s.ancestorsUpTo(stop)) {
       if (anc == chart.root) {
         break;
       }
-      toEnter.add(anc);
+      toEnter.states.add(anc);
       if (anc.isParallel()) {
-        for (Node region : anc.stateChildren()) {
-          if (toEnter.stream().noneMatch(e -> e == region || e.isDescendantOf(region))) {
-            addDescendants(region, toEnter, history);
+        for (Node child : anc.stateChildren()) {
+          if (toEnter.states.stream().noneMatch(e -> e.isDescendantOf(child))) {
+            addDescendants(child, toEnter);
           }
         }
       }
+    }
+  }
+
+  /** A microstep taken in a macrostep: its transitions, the configuration it left, what it did. */
+  record Taken(List<ScTransition> transitions, Configuration before, Micro micro) {
+    /** The name of the step: the transitions' ids, separated by spaces. */
+    String name() {
+      StringBuilder b = new StringBuilder();
+      for (ScTransition t : transitions) {
+        b.append(b.isEmpty() ? "" : " ").append(t.id());
+      }
+      return b.toString();
+    }
+  }
+
+  /**
+   * A macrostep in the making (the recommendation's mainEventLoop between two external events): the
+   * microsteps taken and the internal queue. Every condition sees the trigger's input as the
+   * event's data. Confined to the thread that made it.
+   */
+  final class Run {
+    private final Map<String, List<ScTransition>> bySource;
+    private final @Nullable Object input;
+    private final List<Taken> taken = new ArrayList<>();
+    private final Deque<String> internal = new ArrayDeque<>();
+    private Configuration current;
+    private @Nullable String event;
+
+    Run(
+        Configuration from,
+        Collection<String> raised,
+        Map<String, List<ScTransition>> bySource,
+        @Nullable Object input) {
+      this.current = from;
+      this.internal.addAll(raised);
+      this.bySource = bySource;
+      this.input = input;
+    }
+
+    /** Where the run is. */
+    Configuration current() {
+      return current;
+    }
+
+    /** The microsteps taken, in order. */
+    List<Taken> taken() {
+      return taken;
+    }
+
+    /** Takes what the external {@code event} enables, if anything. */
+    void external(String trigger) {
+      if (finished(current)) {
+        return;
+      }
+      event = trigger;
+      List<ScTransition> ts = select(current, trigger, trigger, input, bySource);
+      if (!ts.isEmpty()) {
+        take(ts);
+      }
+    }
+
+    /**
+     * Eventless transitions, else the internal queue's next event, until neither enables anything.
+     *
+     * @throws RepresentationException after more than {@value #MAX_MICROSTEPS} microsteps
+     */
+    void settle() {
+      while (!finished(current)) {
+        List<ScTransition> ts = select(current, null, event, input, bySource);
+        if (ts.isEmpty()) {
+          String next = internal.poll();
+          if (next == null) {
+            return;
+          }
+          event = next;
+          ts = select(current, next, next, input, bySource);
+        }
+        if (!ts.isEmpty()) {
+          take(ts);
+        }
+      }
+      internal.clear();
+    }
+
+    private void take(List<ScTransition> ts) {
+      if (taken.size() >= MAX_MICROSTEPS) {
+        throw new RepresentationException(
+            "a run-to-completion step took more than "
+                + MAX_MICROSTEPS
+                + " microsteps, the last "
+                + taken.subList(taken.size() - 3, taken.size()).stream().map(Taken::name).toList()
+                + "; expected eventless transitions and raised events to come to rest");
+      }
+      Micro micro = microstep(ts, current);
+      taken.add(new Taken(List.copyOf(ts), current, micro));
+      internal.addAll(micro.raised());
+      current = micro.after();
     }
   }
 }

@@ -23,18 +23,20 @@ import org.armgals.representation.Step;
 public interface Statechart extends StateSpace<Configuration> {
 
   /**
-   * The chart of {@code definition}, whose {@code cond}s name guards of {@code guards} (or are
-   * {@code In(stateId)}).
+   * The chart of {@code definition}, whose {@code cond}s name guards of {@code guards} or are
+   * written in the condition language ({@code In('id')}, {@code true}, comparisons of {@code
+   * _event.name} and {@code _event.data} fields: docs/representations.md).
    *
    * @throws IllegalArgumentException if the definition does not hold together (an id used twice, an
-   *     initial or target naming no state, a guard with no function), with the culprit named
+   *     initial or target naming no state, a condition that is neither a guard's name nor in the
+   *     condition language, a start that does not come to rest), with the culprit named
    */
   static Statechart of(ScDefinition definition, Map<String, Guard> guards) {
     return new StatechartImpl(
         requireNonNull(definition, "definition"), requireNonNull(guards, "guards"));
   }
 
-  /** The chart of {@code definition}, which may use no guard but {@code In(stateId)}. */
+  /** The chart of {@code definition}, whose conditions are all in the condition language. */
   static Statechart of(ScDefinition definition) {
     return of(definition, Map.of());
   }
@@ -52,7 +54,10 @@ public interface Statechart extends StateSpace<Configuration> {
    */
   Behavior<Configuration> bind(ScTransition transition);
 
-  /** The actions entering the initial configuration runs, which the entity runs when it starts. */
+  /**
+   * The actions the start runs, which the entity runs when it starts: the initial entry's, then
+   * those of the eventless transitions and raised or done events it leads to, to completion.
+   */
   List<String> initialActions();
 
   /**

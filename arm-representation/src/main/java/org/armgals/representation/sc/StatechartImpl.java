@@ -13,6 +13,7 @@ import java.util.Set;
 import org.armgals.representation.Activation;
 import org.armgals.representation.Behavior;
 import org.armgals.representation.Behaviors;
+import org.armgals.representation.RepresentationException;
 import org.armgals.representation.internal.OrderedBehaviors;
 import org.armgals.representation.sc.Chart.Node;
 import org.jspecify.annotations.Nullable;
@@ -30,19 +31,39 @@ final class StatechartImpl implements Statechart {
   StatechartImpl(ScDefinition definition, Map<String, Guard> guards) {
     this.definition = definition;
     this.semantics = new Semantics(new Chart(definition), guards);
-    Semantics.Micro start = semantics.initial();
     this.configurations = new Configurations(semantics.chart, definition.name());
-    this.initial = start.after();
-    this.initialActions = start.actions();
     this.admission = new Admission(this);
     Behaviors<Configuration> bound = OrderedBehaviors.empty(admission);
+    Map<String, List<ScTransition>> bySource = new LinkedHashMap<>();
     for (ScTransition t : definition.transitions()) {
       if (bound.lookup(t.id()).isPresent()) {
         throw new IllegalArgumentException("transition id '" + t.id() + "' is used twice");
       }
       bound = bound.with(bind(t));
+      bySource.computeIfAbsent(t.source(), s -> new ArrayList<>()).add(t);
     }
     this.transitions = bound;
+    // The recommendation's start: the initial entry, then eventless transitions and the events it
+    // raised (done events included) to completion, with no event and no input.
+    Semantics.Micro start = semantics.start();
+    List<String> actions = new ArrayList<>(start.actions());
+    Configuration at = start.after();
+    if (!start.finished()) {
+      Semantics.Run run = semantics.new Run(at, start.raised(), bySource, null);
+      try {
+        run.settle();
+      } catch (RepresentationException e) {
+        throw new IllegalArgumentException(
+            "chart '" + definition.name() + "' does not come to rest at start: " + e.getMessage(),
+            e);
+      }
+      for (Semantics.Taken taken : run.taken()) {
+        actions.addAll(taken.micro().actions());
+      }
+      at = run.current();
+    }
+    this.initial = at;
+    this.initialActions = List.copyOf(actions);
   }
 
   /** Only transitions bound to this chart may join its behaviors. */

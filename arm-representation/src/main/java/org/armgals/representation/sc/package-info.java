@@ -5,8 +5,8 @@
  * and deep history, final states, entry and exit actions) and named {@link
  * org.armgals.representation.sc.Guard}s; its states are {@link
  * org.armgals.representation.sc.Configuration}s, its behaviors are its transitions, and a dispatch
- * is one run-to-completion step. {@link org.armgals.representation.sc.Scxml} reads and writes a
- * documented subset of W3C SCXML.
+ * is one run-to-completion step of the W3C SCXML algorithm. {@link
+ * org.armgals.representation.sc.Scxml} reads and writes a documented subset of W3C SCXML.
  *
  * <p>Actions are not run by the chart: they are named, and each step lists the actions of its
  * transition (exits, transition content, entries) for the entity to run, so that a model can replay

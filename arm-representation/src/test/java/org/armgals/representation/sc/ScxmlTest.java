@@ -101,16 +101,16 @@ class ScxmlTest {
   }
 
   @Test
-  void aDataModelOrScriptIsRefused() {
+  void aDataModelOtherThanNullOrEcmascriptOrAScriptIsRefused() {
     assertThatThrownBy(
             () ->
                 Scxml.read(
                     """
-                    <scxml xmlns="http://www.w3.org/2005/07/scxml" datamodel="ecmascript">
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml" datamodel="xpath">
                       <state id="A"/>
                     </scxml>
                     """))
-        .hasMessageContaining("ecmascript")
+        .hasMessageContaining("xpath")
         .hasMessageContaining("line 1");
     assertThatThrownBy(
             () ->
@@ -123,6 +123,107 @@ class ScxmlTest {
                     </scxml>
                     """))
         .hasMessageContaining("<script>")
+        .hasMessageContaining("line 3");
+  }
+
+  @Test
+  void textInsideDataOrContentIsRefusedAsTheUnsupportedElementHoldingItWithItsLine() {
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml">
+                      <state id="A">
+                        <datamodel>
+                          <data id="x">42</data>
+                        </datamodel>
+                      </state>
+                    </scxml>
+                    """))
+        .isInstanceOf(ScxmlException.class)
+        .hasMessageContaining("element <datamodel> is not supported")
+        .hasMessageNotContaining("text")
+        .satisfies(e -> assertThat(((ScxmlException) e).line()).isEqualTo(3));
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml">
+                      <state id="A">
+                        <onentry>
+                          <send event="e"><content>hello</content></send>
+                        </onentry>
+                      </state>
+                    </scxml>
+                    """))
+        .hasMessageContaining("element <send> is not supported")
+        .hasMessageNotContaining("text")
+        .satisfies(e -> assertThat(((ScxmlException) e).line()).isEqualTo(4));
+  }
+
+  @Test
+  void textInASupportedElementIsRefusedNamingThatElementAndTheTextsLine() {
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml">
+                      <state id="A">
+                        <onentry><raise event="e">now</raise></onentry>
+                      </state>
+                    </scxml>
+                    """))
+        .hasMessageContaining("text in <raise> is not supported")
+        .satisfies(e -> assertThat(((ScxmlException) e).line()).isEqualTo(3));
+  }
+
+  @Test
+  void anEcmascriptDocumentWhoseConditionsAreInTheLanguageIsAccepted() {
+    ScDefinition d =
+        Scxml.read(
+            """
+            <scxml xmlns="http://www.w3.org/2005/07/scxml" datamodel="ecmascript">
+              <state id="A">
+                <transition event="go" cond="_event.data.speed &gt; 10 &amp;&amp; In('A')"
+                            target="B"/>
+                <transition event="go" cond="ready" target="B"/>
+              </state>
+              <state id="B"/>
+            </scxml>
+            """);
+    assertThat(d.transitions())
+        .extracting(ScTransition::cond)
+        .containsExactly("_event.data.speed > 10 && In('A')", "ready");
+  }
+
+  @Test
+  void aConditionBeyondTheLanguageIsRefusedNamingTheConstructAndItsLine() {
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml" datamodel="ecmascript">
+                      <state id="A">
+                        <transition cond="Var1 == 0" target="B"/>
+                      </state>
+                      <state id="B"/>
+                    </scxml>
+                    """))
+        .isInstanceOf(ScxmlException.class)
+        .hasMessageContaining("'Var1'")
+        .hasMessageContaining("condition language")
+        .satisfies(e -> assertThat(((ScxmlException) e).line()).isEqualTo(3));
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml" datamodel="ecmascript">
+                      <state id="A">
+                        <transition cond="typeof _event.data === 'object'" target="A"/>
+                      </state>
+                    </scxml>
+                    """))
+        .hasMessageContaining("'typeof'")
         .hasMessageContaining("line 3");
   }
 

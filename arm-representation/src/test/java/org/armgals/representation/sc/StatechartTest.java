@@ -152,13 +152,27 @@ class StatechartTest {
               ScTransition.on("t3", "a2", "f", "b2").when("In(b1)"));
 
   @Test
-  void oneEventTakesATransitionInEachOrthogonalRegionInDocumentOrder() {
+  void oneEventTakesATransitionInEachOrthogonalRegionAsOneMicrostep() {
     Activation<Configuration> a = start(REGIONS);
     assertThat(a.state().active()).containsExactly("Par", "R1", "a1", "R2", "a2");
     List<Step<Configuration>> steps = a.dispatch("e", null);
-    assertThat(behaviors(steps)).containsExactly("t1", "t2");
-    assertThat(steps.get(0).result()).isEqualTo(List.of("one"));
+    assertThat(behaviors(steps)).containsExactly("t1 t2");
+    assertThat(steps.get(0).result()).isEqualTo(List.of("one", "two"));
     assertThat(a.state().active()).containsExactly("Par", "R1", "b1", "R2", "b2");
+  }
+
+  @Test
+  void aMicrostepOfSeveralTransitionsIsReplayedByItsName() {
+    Statechart chart = Statechart.of(REGIONS);
+    Activation<Configuration> model = start(chart);
+    Step<Configuration> step = model.apply("t1 t2", null);
+    assertThat(step.result()).isEqualTo(List.of("one", "two"));
+    assertThat(model.state().active()).containsExactly("Par", "R1", "b1", "R2", "b2");
+    assertThatThrownBy(() -> model.apply("t1 nowhere", null))
+        .isInstanceOf(org.armgals.representation.NoSuchBehaviorException.class)
+        .hasMessageContaining("t1 nowhere");
+    assertThatThrownBy(() -> model.apply("t1 t2", null))
+        .isInstanceOf(org.armgals.representation.BehaviorNotApplicableException.class);
   }
 
   @Test
@@ -281,6 +295,19 @@ class StatechartTest {
     Activation<Configuration> a = start(chart);
     assertThat(a.dispatch("e", 3)).isEmpty();
     assertThat(behaviors(a.dispatch("e", 30))).containsExactly("t");
+  }
+
+  @Test
+  void aConfigurationForcedWhereAnEventlessTransitionIsEnabledComesToRestAtTheNextDispatch() {
+    Statechart chart =
+        Statechart.of(
+            ScDefinition.of("rest", ScNode.state("A"), ScNode.state("B"), ScNode.state("C"))
+                .withTransitions(
+                    ScTransition.on("ab", "A", "go", "B"), ScTransition.eventless("bc", "B", "C")));
+    Activation<Configuration> a = start(chart);
+    a.reset(new Configuration(java.util.Set.of("B"), Map.of()));
+    assertThat(behaviors(a.dispatch("unknown", null))).containsExactly("bc");
+    assertThat(a.state().active()).containsExactly("C");
   }
 
   @Test
