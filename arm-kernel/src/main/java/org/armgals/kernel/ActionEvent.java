@@ -15,12 +15,19 @@ import org.jspecify.annotations.Nullable;
  * @param entity the entity
  * @param destination its behavioral meta
  * @param seq its number in the entity's sequence
+ * @param nanoTime the entity's time at the step it tells of, from its kernel's time source (the
+ *     base level's clock: virtual time in a simulation, wherever the meta runs)
  * @param behavior the name of the behavior applied (a method name, a transition identifier)
  * @param input the behavior's input; a simple value (string, number, boolean) if the event is to
  *     cross runtimes
  */
 public record ActionEvent(
-    Address entity, Address destination, long seq, String behavior, @Nullable Object input)
+    Address entity,
+    Address destination,
+    long seq,
+    long nanoTime,
+    String behavior,
+    @Nullable Object input)
     implements Notification {
 
   /** Checks the components. */

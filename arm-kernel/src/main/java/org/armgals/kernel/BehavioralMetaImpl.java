@@ -17,6 +17,7 @@ import org.armgals.active.ObjectStoppedException;
 import org.armgals.kernel.spi.MetaContext;
 import org.armgals.kernel.spi.MetaPolicy;
 import org.armgals.representation.State;
+import org.jspecify.annotations.Nullable;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -34,6 +35,9 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
   private final List<Entity> bases = new CopyOnWriteArrayList<>();
   final Map<Address, Published> views = new ConcurrentHashMap<>();
   private final MetaContext context = new Context();
+
+  /** What the policy is handling now, if anything: the cause of what it decides. */
+  private ReflectionEvent.@Nullable Cause cause;
 
   BehavioralMetaImpl(
       KernelImpl kernel,
@@ -75,11 +79,20 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
    * Lock step: the entity has sent every notification of an instant, all handled now; from now on
    * the requests for it are held back and released in the answer to its next barrier.
    */
-  private void barrier(Wire.Barrier b) {
+  private void barrier(Wire.Barrier b) throws Exception {
     Model<?> m = models.get(b.sender());
     List<AdaptationRequest> held = List.of();
+    Exception failure = null;
     if (m != null) {
       m.lockStep = true;
+      cause = new ReflectionEvent.Cause(m.entity().name(), b.seq(), b.nanoTime());
+      try {
+        policy.onInstant(context, b.sender(), b.instant());
+      } catch (Exception e) {
+        failure = e; // the barrier is answered all the same: the entity must not wait for nothing
+      } finally {
+        cause = null;
+      }
       held = List.copyOf(m.held);
       m.held.clear();
       publish(m);
@@ -91,6 +104,9 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
           .send(new Wire.Released(address(), b.replyTo(), b.sender(), b.instant(), held));
     } catch (ObjectStoppedException e) {
       LOG.debug("answer to {} not delivered: the entity's kernel is closed", b);
+    }
+    if (failure != null) {
+      throw failure;
     }
   }
 
@@ -109,16 +125,25 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
 
   private void notified(Notification n) throws Exception {
     Model<?> m = models.get(n.entity());
-    if (m == null) {
-      return; // from an entity deleted from this meta, still in flight
+    if (m == null || m.stale(n)) {
+      return; // from an entity deleted from this meta, still in flight; or a duplicate
     }
     long now = kernel.nanoTime();
     if (m.integrate(n, now)) {
       sendTo(m.entity(), new ResyncRequest(address(), n.entity(), m.lastSeq()));
     }
     publish(m);
-    if (Selectors.matches(m.filter, n)) {
-      policy.onNotification(context, n);
+    boolean passed = Selectors.matches(m.filter, n);
+    if (kernel.listening()) {
+      kernel.tell(new ReflectionEvent.Received(name(), m.entity().name(), n, passed));
+    }
+    if (passed) {
+      cause = new ReflectionEvent.Cause(m.entity().name(), n.seq(), n.nanoTime());
+      try {
+        policy.onNotification(context, n);
+      } finally {
+        cause = null;
+      }
     }
   }
 
@@ -237,13 +262,16 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
   public Future setFilter(Entity entity, String selector) {
     Entity e = base(entity);
     Filter compiled = Filter.selector(selector);
-    return object().signal(own -> swapFilter(e.address(), compiled));
+    return object().signal(own -> swapFilter(e.address(), compiled, selector));
   }
 
-  private void swapFilter(Address entity, Filter compiled) {
+  private void swapFilter(Address entity, Filter compiled, String selector) {
     Model<?> m = model(entity);
     m.filter = compiled;
     publish(m);
+    if (kernel.listening()) {
+      kernel.tell(new ReflectionEvent.FilterChanged(name(), m.entity().name(), selector, cause));
+    }
   }
 
   @Override
@@ -261,8 +289,11 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
 
   private OptionalLong adaptNow(Address entity, Adaptation adaptation) {
     Model<?> m = model(entity);
-    if (!m.governor.tryAdapt(kernel.nanoTime())) {
+    if (!m.governor.tryAdapt(baseNow(m))) {
       publish(m);
+      if (kernel.listening()) {
+        kernel.tell(new ReflectionEvent.Suppressed(name(), m.entity().name(), adaptation, cause));
+      }
       return OptionalLong.empty();
     }
     long version = ++m.requestedVersion;
@@ -273,16 +304,34 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
       sendTo(m.entity(), request);
     }
     publish(m);
+    if (kernel.listening()) {
+      kernel.tell(
+          new ReflectionEvent.Requested(name(), m.entity().name(), request, cause, m.lockStep));
+    }
     return OptionalLong.of(version);
+  }
+
+  /**
+   * Now in the clock of {@code m}'s entity, for its damping: the time of what the policy handles,
+   * if anything; else the kernel's time for an entity of this runtime (the same clock), and the
+   * time of the entity's last notification for one of another runtime (whose clock this kernel
+   * cannot read). So a meta damps in the base level's time wherever it runs.
+   */
+  private long baseNow(Model<?> m) {
+    ReflectionEvent.Cause c = cause;
+    if (c != null) {
+      return c.nanoTime();
+    }
+    return m.entity() instanceof RemoteEntity ? m.baseTime() : kernel.nanoTime();
   }
 
   /**
    * Tells this meta that {@code runtime} is gone: every model of an entity living there is marked
    * lost, and the policy hears a {@link FailureEvent} for it, whatever the entity's filter (a loss
-   * is always told, as failures are). The event's {@code error} is {@code cause}, its {@code seq}
+   * is always told, as failures are). The event's {@code error} is {@code error}, its {@code seq}
    * the last one the model integrated (it is not integrated itself).
    */
-  void runtimeGone(String runtime, String cause, String message) {
+  void runtimeGone(String runtime, String error, String message) {
     requireNonNull(runtime, "runtime");
     object()
         .signal(
@@ -296,7 +345,13 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
                 policy.onNotification(
                     context,
                     new FailureEvent(
-                        m.address(), address(), Math.max(1, m.lastSeq()), cause, message, ""));
+                        m.address(),
+                        address(),
+                        Math.max(1, m.lastSeq()),
+                        m.baseTime(),
+                        error,
+                        message,
+                        ""));
               }
             });
   }
@@ -341,12 +396,13 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
 
     @Override
     public void setFilter(Address entity, String selector) {
-      swapFilter(entity, Filter.selector(selector));
+      swapFilter(entity, Filter.selector(selector), selector);
     }
 
     @Override
     public long nanoTime() {
-      return kernel.nanoTime();
+      ReflectionEvent.Cause c = cause;
+      return c != null ? c.nanoTime() : kernel.nanoTime();
     }
   }
 

@@ -28,4 +28,16 @@ public interface EntityMXBean {
 
   /** The version of the last adaptation it applied. */
   long getAppliedVersion();
+
+  /**
+   * How many of its adaptation points took longer than its clock's period applying their requests
+   * (the cycle's time budget); 0 for an entity without a clock.
+   */
+  long getAdaptationOverruns();
+
+  /** The longest one of its adaptation points took applying its requests, in nanoseconds. */
+  long getAdaptationMaxNanos();
+
+  /** How many times it stopped waiting for a meta in lock step (it runs free since). */
+  long getLockStepTimeouts();
 }

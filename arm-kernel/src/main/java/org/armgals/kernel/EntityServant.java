@@ -12,12 +12,14 @@ import java.util.List;
 import java.util.Map;
 import org.armgals.active.ActiveObject;
 import org.armgals.active.Address;
+import org.armgals.active.Clock;
 import org.armgals.active.Event;
 import org.armgals.active.EventProcessor;
 import org.armgals.active.ManualClock;
 import org.armgals.active.ObjectStoppedException;
 import org.armgals.active.ReactiveCycle;
 import org.armgals.active.Request;
+import org.armgals.active.TimeSource;
 import org.armgals.kernel.spi.InstantContext;
 import org.armgals.kernel.spi.ReactiveProgram;
 import org.armgals.representation.Activation;
@@ -54,6 +56,7 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
   private final @Nullable ReactiveProgram program;
   private final Duration lockStepTimeout;
   private final int lockStep;
+  private final long budgetNanos;
   private boolean lockStepping = true;
   private @Nullable EntityImpl<E> owner;
 
@@ -62,6 +65,8 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
   private volatile @Nullable BehavioralMetaImpl meta;
   private volatile @Nullable Address metaAddress;
   private volatile long appliedVersion;
+  private volatile long adaptationOverruns;
+  private volatile long adaptationMaxNanos;
 
   private long seq;
   private @Nullable Map<String, Object> lastObserved;
@@ -82,6 +87,8 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
     this.lockStep = options.lockStep();
     this.lockStepTimeout = options.lockStepTimeout();
     this.gate = lockStepGate(options);
+    Clock clock = options.config().clock();
+    this.budgetNanos = clock == null ? Long.MAX_VALUE : clock.period().toNanos();
     this.policy = options.notification();
     this.current = activation.state();
   }
@@ -112,6 +119,19 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
 
   long appliedVersion() {
     return appliedVersion;
+  }
+
+  /**
+   * How many adaptation points took longer than the entity's clock period applying their requests
+   * (the cycle's time budget), by the kernel's stopwatch.
+   */
+  long adaptationOverruns() {
+    return adaptationOverruns;
+  }
+
+  /** The longest an adaptation point took applying its requests, by the kernel's stopwatch. */
+  long adaptationMaxNanos() {
+    return adaptationMaxNanos;
   }
 
   /** How many times a lock-step adaptation point gave up waiting for the meta. */
@@ -151,10 +171,9 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
         }
       }
       case AdaptationRequest r -> {
+        pending.add(r);
         if (adaptationPoint == AdaptationPoint.ON_ARRIVAL) {
-          adapt(r);
-        } else {
-          pending.add(r);
+          applyPending();
         }
       }
       case ResyncRequest r -> snapshot();
@@ -238,7 +257,7 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
     if (g != null && lockStepping) {
       pending.addAll(g.take(n - lockStep));
       if (g.free()) {
-        goFree(n);
+        goFree(n, g.reason());
       }
     }
     applyPending();
@@ -248,25 +267,42 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
    * A release gave up waiting for the meta: the entity runs free from now on (its reactive level
    * goes on without its meta), tells the meta so, and reports the failure to it.
    */
-  private void goFree(long n) {
+  private void goFree(long n, String reason) {
     lockStepping = false;
     Address m = metaAddress;
     LOG.warn(
-        "entity '{}' stops waiting for its meta at instant {}: no answer within {}; it runs free"
-            + " from now on",
+        "entity '{}' stops waiting for its meta at instant {}: {}; it runs free from now on",
         owner().name(),
         n,
-        lockStepTimeout);
+        reason);
+    if (owner().kernel.listening()) {
+      owner().kernel.tell(new ReflectionEvent.WentFree(owner().name(), n, reason));
+    }
     if (m != null) {
       send(m, new Wire.Free(owner().address(), m));
     }
     failed(
         null,
-        new IllegalStateException(
-            "lock step with the meta lost at instant "
-                + n
-                + ": no answer within "
-                + lockStepTimeout));
+        new IllegalStateException("lock step with the meta lost at instant " + n + ": " + reason));
+  }
+
+  /**
+   * The runtime {@code runtime} was reported lost or gone: if this entity's meta lives there, the
+   * entity tells the listener and, in lock step, stops waiting for it at once (it goes free at its
+   * next adaptation point). On the presence thread.
+   */
+  void metaGone(String runtime, String message) {
+    Address m = metaAddress;
+    if (m == null || !m.runtime().equals(runtime)) {
+      return;
+    }
+    if (owner().kernel.listening()) {
+      owner().kernel.tell(new ReflectionEvent.MetaLost(owner().name(), runtime, message));
+    }
+    LockStepGate g = gate;
+    if (g != null) {
+      g.release("its meta's " + message);
+    }
   }
 
   /** In lock step: tells the meta that every notification up to now has been sent. */
@@ -282,7 +318,7 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
       gateRegistered = true;
     }
     g.sent(n);
-    send(m, new Wire.Barrier(owner().address(), m, n, seq, desk.address()));
+    send(m, new Wire.Barrier(owner().address(), m, n, seq, now(), desk.address()));
   }
 
   /** Sends {@code event} to the meta at {@code m}, of this runtime or another. */
@@ -312,16 +348,44 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
   private static final Comparator<AdaptationRequest> BY_VERSION =
       Comparator.comparingLong(AdaptationRequest::version);
 
+  /**
+   * The adaptation point: applies the pending requests in version order, timed by the kernel's
+   * stopwatch against the clock's period (the cycle's time budget).
+   */
   private void applyPending() {
+    if (pending.isEmpty()) {
+      return;
+    }
     if (pending.size() > 1) {
       List<AdaptationRequest> sorted = new ArrayList<>(pending);
       sorted.sort(BY_VERSION);
       pending.clear();
       pending.addAll(sorted);
     }
+    TimeSource stopwatch = owner().kernel.options().stopwatch();
+    long start = stopwatch.nanoTime();
+    long before = start;
+    boolean overrun = false;
     AdaptationRequest r;
     while ((r = pending.poll()) != null) {
-      adapt(r);
+      String refusal = adapt(r);
+      long after = stopwatch.nanoTime();
+      overrun |= after - start > budgetNanos;
+      if (owner().kernel.listening()) {
+        owner()
+            .kernel
+            .tell(
+                new ReflectionEvent.Applied(
+                    owner().name(), instant, r, refusal, after - before, overrun));
+      }
+      before = after;
+    }
+    long spent = before - start;
+    if (spent > adaptationMaxNanos) {
+      adaptationMaxNanos = spent;
+    }
+    if (overrun) {
+      adaptationOverruns++;
     }
   }
 
@@ -333,9 +397,12 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
     return step.result();
   }
 
-  /** Flow 5: the structural meta's behaviors replace this entity's. */
+  /** Flow 5: the structural meta's behaviors replace this entity's; its program is told. */
   void harmonize(Behaviors<E> behaviors) {
     activation.harmonize(behaviors);
+    if (program != null) {
+      program.harmonized(behaviors);
+    }
   }
 
   /** A behavioral meta takes this entity: it is told everything from a complete state on. */
@@ -379,16 +446,20 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
               owner().address(),
               m,
               ++seq,
+              now(),
               error.getClass().getName(),
               error.getMessage() == null ? "" : error.getMessage(),
               event == null ? "" : event.toString()));
     }
   }
 
-  private void adapt(AdaptationRequest r) {
+  /** Applies {@code r}, or refuses it; acknowledges it either way. Answers the refusal or null. */
+  private @Nullable String adapt(AdaptationRequest r) {
     if (r.version() <= appliedVersion) {
-      ack(r, "version " + r.version() + " is not after the applied version " + appliedVersion);
-      return;
+      String refusal =
+          "version " + r.version() + " is not after the applied version " + appliedVersion;
+      ack(r, refusal);
+      return refusal;
     }
     try {
       if (program != null) {
@@ -407,10 +478,11 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
       }
     } catch (RuntimeException e) {
       ack(r, e.toString());
-      return;
+      return e.toString();
     }
     appliedVersion = r.version();
     ack(r, null);
+    return null;
   }
 
   private void ack(AdaptationRequest r, @Nullable String failure) {
@@ -429,7 +501,7 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
     if (m != null) {
       Map<String, Object> all = current.observe();
       lastObserved = project(grain(current, all, policy), policy);
-      notify(m, new StateEvent(owner().address(), m, ++seq, null, all, true));
+      notify(m, new StateEvent(owner().address(), m, ++seq, now(), null, all, true));
     }
   }
 
@@ -442,7 +514,7 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
     if (m != null
         && p.actions()
         && (p.behaviors().isEmpty() || p.behaviors().contains(step.behavior()))) {
-      notify(m, new ActionEvent(owner().address(), m, ++seq, step.behavior(), input));
+      notify(m, new ActionEvent(owner().address(), m, ++seq, now(), step.behavior(), input));
     }
     if (m != null && p.states()) {
       Map<String, Object> projected = project(grained, p);
@@ -450,12 +522,15 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
         lastObserved = projected;
         boolean complete = projected.equals(observed);
         notify(
-            m, new StateEvent(owner().address(), m, ++seq, step.behavior(), projected, complete));
+            m,
+            new StateEvent(
+                owner().address(), m, ++seq, now(), step.behavior(), projected, complete));
       }
     }
     thresholds(m, p.thresholds(), observed);
     if (m != null && step.result() instanceof Reflect r) {
-      notify(m, new ReflectiveRequest(owner().address(), m, ++seq, r.subject(), r.argument()));
+      notify(
+          m, new ReflectiveRequest(owner().address(), m, ++seq, now(), r.subject(), r.argument()));
     }
   }
 
@@ -473,7 +548,9 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
       }
       below.put(t.name(), now);
       if (was != null && !was.equals(now) && m != null) {
-        notify(m, new ThresholdEvent(owner().address(), m, ++seq, t.name(), t.property(), v, now));
+        notify(
+            m,
+            new ThresholdEvent(owner().address(), m, ++seq, now(), t.name(), t.property(), v, now));
       }
     }
   }
@@ -510,6 +587,9 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
   }
 
   private void notify(Address m, Notification n) {
+    if (owner().kernel.listening()) {
+      owner().kernel.tell(new ReflectionEvent.Notified(owner().name(), instant, n));
+    }
     if (toLose > 0) {
       toLose--;
       return;
@@ -524,6 +604,11 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
     } catch (ObjectStoppedException e) {
       LOG.debug("notification {} not delivered: its meta is stopped", n);
     }
+  }
+
+  /** The entity's time now, from its kernel's time source: what its notifications carry. */
+  private long now() {
+    return owner().kernel.nanoTime();
   }
 
   /** What the program sees of its instant; used only on the entity's object. */

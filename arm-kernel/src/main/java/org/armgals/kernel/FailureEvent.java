@@ -13,12 +13,20 @@ import org.armgals.active.Address;
  * @param entity the entity
  * @param destination its behavioral meta
  * @param seq its number in the entity's sequence
+ * @param nanoTime the entity's time at the step it tells of, from its kernel's time source (the
+ *     base level's clock: virtual time in a simulation, wherever the meta runs)
  * @param error the class name of the exception
  * @param message its message, empty if it had none
  * @param event what it was processing, as text; empty outside an event (a reactive cycle)
  */
 public record FailureEvent(
-    Address entity, Address destination, long seq, String error, String message, String event)
+    Address entity,
+    Address destination,
+    long seq,
+    long nanoTime,
+    String error,
+    String message,
+    String event)
     implements Notification {
 
   /** Checks the components. */

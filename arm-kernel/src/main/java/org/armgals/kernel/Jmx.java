@@ -106,6 +106,21 @@ final class Jmx {
     public long getAppliedVersion() {
       return e.appliedVersion();
     }
+
+    @Override
+    public long getAdaptationOverruns() {
+      return e.servant.adaptationOverruns();
+    }
+
+    @Override
+    public long getAdaptationMaxNanos() {
+      return e.servant.adaptationMaxNanos();
+    }
+
+    @Override
+    public long getLockStepTimeouts() {
+      return e.servant.lockStepTimeouts();
+    }
   }
 
   record MetaBean(BehavioralMetaImpl m) implements BehavioralMetaMXBean {

@@ -14,15 +14,20 @@ import org.armgals.active.Address;
 import org.armgals.active.JmsTransport;
 import org.armgals.active.ObjectConfig;
 import org.armgals.kernel.spi.MetaPolicy;
+import org.armgals.kernel.spi.ReflectionListener;
 import org.armgals.presence.PresenceEvent;
 import org.armgals.presence.spi.PresenceListener;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.State;
 import org.armgals.representation.StateSpace;
 import org.jspecify.annotations.Nullable;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /** The bootstrapped kernel: its four kernel entities and the registry of all its entities. */
 final class KernelImpl implements Kernel {
+  private static final Logger LOG = LoggerFactory.getLogger(KernelImpl.class);
+
   static final String ENTITY = "Entity";
   static final String STRUCTURAL_META = "StructuralMeta";
   static final String BEHAVIORAL_META = "BehavioralMeta";
@@ -163,9 +168,13 @@ final class KernelImpl implements Kernel {
       }
     }
     for (EntityImpl<?> e : byAddress.values()) {
-      if (e instanceof BehavioralMetaImpl meta && !meta.isStopped()) {
+      if (e.isStopped()) {
+        continue;
+      }
+      if (e instanceof BehavioralMetaImpl meta) {
         meta.runtimeGone(event.runtime(), event.getClass().getName(), message);
       }
+      e.servant.metaGone(event.runtime(), message);
     }
   }
 
@@ -229,6 +238,20 @@ final class KernelImpl implements Kernel {
 
   long nanoTime() {
     return options.timeSource().nanoTime();
+  }
+
+  /** Whether a listener hears the reflective loop: events are made only then. */
+  boolean listening() {
+    return options.listener() != ReflectionListener.NONE;
+  }
+
+  /** Tells the listener {@code event}; a failure of the listener is logged, never thrown. */
+  void tell(ReflectionEvent event) {
+    try {
+      options.listener().on(event);
+    } catch (RuntimeException e) {
+      LOG.warn("the reflection listener failed on {}", event, e);
+    }
   }
 
   @Override

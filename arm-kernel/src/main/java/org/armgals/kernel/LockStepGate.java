@@ -31,6 +31,7 @@ final class LockStepGate implements LongConsumer {
   private final NavigableMap<Long, List<AdaptationRequest>> answers = new TreeMap<>();
   private boolean free;
   private long timeouts;
+  private String why = "";
 
   LockStepGate(int latency, Duration timeout) {
     this.latency = latency;
@@ -74,6 +75,7 @@ final class LockStepGate implements LongConsumer {
         if (left <= 0) {
           free = true;
           timeouts++;
+          why = "no answer within " + timeout;
           return;
         }
         left = answer.awaitNanos(left);
@@ -97,6 +99,34 @@ final class LockStepGate implements LongConsumer {
       head.values().forEach(due::addAll);
       head.clear();
       return due;
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /**
+   * Stops waiting for the meta at once, for {@code reason} (its runtime was reported lost, say): a
+   * release waiting now returns, and the entity runs free from its next adaptation point. Any
+   * thread.
+   */
+  void release(String reason) {
+    lock.lock();
+    try {
+      if (!free) {
+        free = true;
+        why = reason;
+        answer.signalAll();
+      }
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /** Why the entity runs free; empty while it does not. */
+  String reason() {
+    lock.lock();
+    try {
+      return why;
     } finally {
       lock.unlock();
     }

@@ -33,6 +33,7 @@ final class Model<S extends State> {
   private Set<S> candidates = Set.of();
   private long lastSeq;
   private long lastHeard;
+  private long baseTime;
   private boolean lost;
   private boolean resyncing = true;
   private long lastAsk;
@@ -73,6 +74,11 @@ final class Model<S extends State> {
     return entity;
   }
 
+  /** Whether {@code n} was integrated already, or is older than what was: a duplicate. */
+  boolean stale(Notification n) {
+    return n.seq() <= lastSeq;
+  }
+
   /**
    * Integrates {@code n} received at {@code now}.
    *
@@ -85,6 +91,7 @@ final class Model<S extends State> {
     boolean gap = lastSeq != 0 && n.seq() != lastSeq + 1;
     lastSeq = n.seq();
     lastHeard = now;
+    baseTime = n.nanoTime();
     lost = false;
     if (gap) {
       resyncing = true;
@@ -140,6 +147,11 @@ final class Model<S extends State> {
     } catch (RepresentationException e) {
       resyncing = true;
     }
+  }
+
+  /** The entity's time at the last notification integrated (its clock); 0 before any. */
+  long baseTime() {
+    return baseTime;
   }
 
   long lastSeq() {

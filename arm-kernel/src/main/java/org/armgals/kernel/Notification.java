@@ -22,6 +22,14 @@ public sealed interface Notification extends Event
   /** Its number in the entity's sequence of notifications, from 1. */
   long seq();
 
+  /**
+   * The entity's time at the step it tells of, in nanoseconds from its kernel's time source: the
+   * base level's clock, which a meta uses for the damping of what it decides on this notification
+   * ({@link org.armgals.kernel.spi.MetaContext#nanoTime()}), so that a meta in another runtime
+   * decides in the base level's time (virtual time in a simulation) as one in the same runtime.
+   */
+  long nanoTime();
+
   /** Its kind for selectors: {@code state}, {@code action}, {@code threshold}, ... */
   String kind();
 

@@ -15,11 +15,18 @@ import org.jspecify.annotations.Nullable;
  * @param entity the entity
  * @param destination its behavioral meta
  * @param seq its number in the entity's sequence
+ * @param nanoTime the entity's time at the step it tells of, from its kernel's time source (the
+ *     base level's clock: virtual time in a simulation, wherever the meta runs)
  * @param subject what the entity asks about
  * @param argument a simple value, or {@code null}
  */
 public record ReflectiveRequest(
-    Address entity, Address destination, long seq, String subject, @Nullable Object argument)
+    Address entity,
+    Address destination,
+    long seq,
+    long nanoTime,
+    String subject,
+    @Nullable Object argument)
     implements Notification {
 
   /** Checks the components. */

@@ -16,6 +16,8 @@ import org.jspecify.annotations.Nullable;
  * @param entity the entity
  * @param destination its behavioral meta
  * @param seq its number in the entity's sequence
+ * @param nanoTime the entity's time at the step it tells of, from its kernel's time source (the
+ *     base level's clock: virtual time in a simulation, wherever the meta runs)
  * @param behavior the behavior whose activation led to it; {@code null} for a snapshot sent on
  *     attachment or on a resynchronization request
  * @param observation the observed values: all of {@link org.armgals.representation.State#observe()}
@@ -27,6 +29,7 @@ public record StateEvent(
     Address entity,
     Address destination,
     long seq,
+    long nanoTime,
     @Nullable String behavior,
     Map<String, Object> observation,
     boolean complete)

@@ -14,6 +14,8 @@ import org.armgals.active.Address;
  * @param entity the entity
  * @param destination its behavioral meta
  * @param seq its number in the entity's sequence
+ * @param nanoTime the entity's time at the step it tells of, from its kernel's time source (the
+ *     base level's clock: virtual time in a simulation, wherever the meta runs)
  * @param threshold the threshold's name
  * @param property the watched value's name
  * @param value the value that crossed
@@ -23,6 +25,7 @@ public record ThresholdEvent(
     Address entity,
     Address destination,
     long seq,
+    long nanoTime,
     String threshold,
     String property,
     double value,

@@ -68,12 +68,13 @@ final class Wire {
   /**
    * Lock step ({@link EntityOptions#lockStep()}): the entity ({@code sender}) has sent its meta
    * ({@code destination}) every notification of its instant {@code instant}, the last numbered
-   * {@code seq}. Once the meta has handled them it sends {@code replyTo} (the entity's kernel's
-   * lock-step desk) a {@link Released} with the adaptation requests it decided since the entity's
-   * previous barrier (held back from the first barrier on instead of sent as events). Sent on the
-   * meta's topic, behind the notifications it closes.
+   * {@code seq}, at its time {@code nanoTime}. Once the meta has handled them it sends {@code
+   * replyTo} (the entity's kernel's lock-step desk) a {@link Released} with the adaptation requests
+   * it decided since the entity's previous barrier (held back from the first barrier on instead of
+   * sent as events). Sent on the meta's topic, behind the notifications it closes.
    */
-  record Barrier(Address sender, Address destination, long instant, long seq, Address replyTo)
+  record Barrier(
+      Address sender, Address destination, long instant, long seq, long nanoTime, Address replyTo)
       implements Event {
     Barrier {
       requireNonNull(sender, "sender");

@@ -34,7 +34,8 @@ class FlowsTest extends KernelFixture {
               assertThat(s.behavior()).isNull();
             });
     assertThat(policy.seen.get(1))
-        .isEqualTo(new ActionEvent(robot.address(), meta.address(), 2, "work", 0.25));
+        .isEqualTo(
+            new ActionEvent(robot.address(), meta.address(), 2, time.nanoTime(), "work", 0.25));
     assertThat(policy.seen.get(2))
         .isInstanceOfSatisfying(
             StateEvent.class,

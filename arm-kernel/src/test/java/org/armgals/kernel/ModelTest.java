@@ -91,26 +91,38 @@ class ModelTest extends KernelFixture {
     var m = kernel.basicBehavioralMeta().address();
     Map<String, Object> full = ROBOT.initialState().observe();
 
-    assertThat(model.integrate(new StateEvent(a, m, 1, null, full, true), time.nanoTime()))
+    assertThat(
+            model.integrate(
+                new StateEvent(a, m, 1, time.nanoTime(), null, full, true), time.nanoTime()))
         .isFalse();
-    assertThat(model.integrate(new ActionEvent(a, m, 3, "work", 0.1), time.nanoTime()))
+    assertThat(
+            model.integrate(
+                new ActionEvent(a, m, 3, time.nanoTime(), "work", 0.1), time.nanoTime()))
         .as("a gap asks at once")
         .isTrue();
-    assertThat(model.integrate(new ActionEvent(a, m, 4, "work", 0.1), time.nanoTime()))
+    assertThat(
+            model.integrate(
+                new ActionEvent(a, m, 4, time.nanoTime(), "work", 0.1), time.nanoTime()))
         .as("not again within the retry period")
         .isFalse();
     time.advance(Duration.ofMillis(100));
-    assertThat(model.integrate(new ActionEvent(a, m, 5, "work", 0.1), time.nanoTime()))
+    assertThat(
+            model.integrate(
+                new ActionEvent(a, m, 5, time.nanoTime(), "work", 0.1), time.nanoTime()))
         .as("still out of sync after the retry period: asks again")
         .isTrue();
     assertThat(model.view(time.nanoTime()).resyncing()).isTrue();
     assertThat(
             model.integrate(
-                new StateEvent(a, m, 6, null, Map.of("battery", 0.5, "mode", "eco"), true),
+                new StateEvent(
+                    a, m, 6, time.nanoTime(), null, Map.of("battery", 0.5, "mode", "eco"), true),
                 time.nanoTime()))
         .isFalse();
     time.advance(Duration.ofMillis(500));
-    assertThat(model.integrate(new ActionEvent(a, m, 7, "work", 0.1), time.nanoTime())).isFalse();
+    assertThat(
+            model.integrate(
+                new ActionEvent(a, m, 7, time.nanoTime(), "work", 0.1), time.nanoTime()))
+        .isFalse();
 
     ModelView view = model.view(time.nanoTime());
     assertThat(view.resyncing()).isFalse();

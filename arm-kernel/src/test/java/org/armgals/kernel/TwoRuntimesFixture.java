@@ -106,6 +106,21 @@ abstract class TwoRuntimesFixture {
     return meta.model(entity).getValue(WAIT);
   }
 
+  /**
+   * Returns once a reactive {@code base} has an event waiting for its next release (an attachment
+   * that crossed the broker, say): a reactive object takes its events only at its releases, so a
+   * test must not step its clock before what it sent has arrived.
+   */
+  static void awaitQueued(Entity base) {
+    long deadline = System.nanoTime() + WAIT.toNanos();
+    while (((EntityImpl<?>) base).object().queueDepth() == 0) {
+      if (System.nanoTime() > deadline) {
+        throw new AssertionError(base + " received nothing within " + WAIT);
+      }
+      java.util.concurrent.locks.LockSupport.parkNanos(1_000_000L);
+    }
+  }
+
   /** Returns once the base entity has applied the adaptation {@code version}. */
   static void awaitApplied(Entity base, long version) {
     ((EntityImpl<?>) base)

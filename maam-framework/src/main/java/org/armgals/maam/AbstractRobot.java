@@ -386,6 +386,20 @@ public abstract class AbstractRobot {
   }
 
   /**
+   * The robot's catalog of modules: builds the module named {@code name} with {@code parameters},
+   * for a {@link RobotKind#changeModule(String, Map)} request, which names a module instead of
+   * carrying one (a meta in another runtime cannot send code). On the robot's thread, at its
+   * adaptation point. The default has no catalog.
+   *
+   * @throws IllegalArgumentException no module of that name, or parameters it cannot take: the
+   *     request is refused and the meta told why
+   */
+  protected BehaviorModule module(String name, Map<String, Object> parameters) {
+    throw new IllegalArgumentException(
+        "robot " + this.name + " has no catalog of modules; cannot build '" + name + "'");
+  }
+
+  /**
    * Called after {@code change}, requested by the robot's meta through the kernel, was applied to
    * its program: on the robot's thread, at its adaptation point, so whatever it records is in step
    * with the cycles (a run's journal, say). Does nothing by default.

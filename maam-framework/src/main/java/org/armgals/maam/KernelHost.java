@@ -25,6 +25,11 @@ final class KernelHost implements ReactiveProgram {
   public void adapt(Adaptation adaptation) {
     switch (adaptation) {
       case Adaptation.ApplyBehavior a -> {
+        if (a.behavior().equals(RobotAdaptations.CHANGE_MODULE)
+            && a.input() instanceof java.util.Map<?, ?> byName) {
+          robot.applyOrRefuse(new org.armgals.maam.Adaptation.ChangeModule(fromCatalog(byName)));
+          return;
+        }
         if (!(a.input() instanceof org.armgals.maam.Adaptation change)) {
           throw new IllegalArgumentException(
               "robot "
@@ -43,5 +48,21 @@ final class KernelHost implements ReactiveProgram {
       }
       case Adaptation.SetNotification s -> {}
     }
+  }
+
+  /** The module a {@link RobotKind#changeModule(String, java.util.Map)} request names. */
+  private BehaviorModule fromCatalog(java.util.Map<?, ?> request) {
+    if (!(request.get(RobotKind.MODULE) instanceof String name)
+        || !(request.get(RobotKind.PARAMETERS) instanceof java.util.Map<?, ?> raw)) {
+      throw new IllegalArgumentException(
+          "robot "
+              + robot.name()
+              + " cannot change a module from "
+              + request
+              + "; expected {module: name, parameters: {...}}");
+    }
+    java.util.Map<String, Object> parameters = new java.util.LinkedHashMap<>();
+    raw.forEach((k, v) -> parameters.put(String.valueOf(k), v));
+    return robot.module(name, parameters);
   }
 }

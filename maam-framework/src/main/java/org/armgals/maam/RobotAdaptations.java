@@ -4,6 +4,8 @@ import java.util.List;
 
 /** The names of a robot's adaptations as behaviors of its {@link RobotKind}. */
 final class RobotAdaptations {
+  static final String CHANGE_MODULE = "changeModule";
+
   static final List<String> NAMES =
       List.of(
           "setScheduling",

@@ -62,6 +62,29 @@ public final class RobotKind {
     return new org.armgals.kernel.Adaptation.ApplyBehavior(RobotAdaptations.name(change), change);
   }
 
+  /**
+   * The kernel's request for a {@code changeModule} by name and parameters: the robot builds the
+   * replacement from its catalog ({@link AbstractRobot#module}). Unlike {@link #request}, which
+   * carries the module itself, it holds only simple values, so a meta in another runtime can send
+   * it.
+   *
+   * @param module the name of the module to replace
+   * @param parameters its new parameters: strings, booleans, boxed numbers, lists of those
+   */
+  public static org.armgals.kernel.Adaptation changeModule(
+      String module, Map<String, Object> parameters) {
+    requireNonNull(module, "module");
+    requireNonNull(parameters, "parameters");
+    return new org.armgals.kernel.Adaptation.ApplyBehavior(
+        RobotAdaptations.CHANGE_MODULE, Map.of(MODULE, module, PARAMETERS, Map.copyOf(parameters)));
+  }
+
+  /** The key of the module's name in a {@link #changeModule(String, Map)} request. */
+  static final String MODULE = "module";
+
+  /** The key of the parameters in a {@link #changeModule(String, Map)} request. */
+  static final String PARAMETERS = "parameters";
+
   private static PState observed(String kind, Object input) {
     if (!(input instanceof Map<?, ?> fields)) {
       throw new IllegalArgumentException(

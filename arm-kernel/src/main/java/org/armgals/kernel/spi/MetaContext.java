@@ -32,6 +32,11 @@ public interface MetaContext {
   /** Replaces the filter of {@code entity}'s notifications, from the next notification on. */
   void setFilter(Address entity, String selector);
 
-  /** Time now, from the kernel's time source, in nanoseconds. */
+  /**
+   * Now, in nanoseconds: while the policy handles a notification (or, in lock step, the end of an
+   * instant), the base entity's time then ({@link org.armgals.kernel.Notification#nanoTime()}, the
+   * base level's clock, which the damping of what it decides uses too); otherwise the kernel's time
+   * source. A meta in another runtime thus decides in the base level's time.
+   */
   long nanoTime();
 }

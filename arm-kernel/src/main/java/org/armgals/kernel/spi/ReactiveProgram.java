@@ -1,6 +1,7 @@
 package org.armgals.kernel.spi;
 
 import org.armgals.kernel.Adaptation;
+import org.armgals.representation.Behaviors;
 
 /**
  * The base-level program of a reactive entity (paper §5.3-5.4, figure 8): what the entity does at
@@ -33,4 +34,13 @@ public interface ReactiveProgram {
    *     break it): nothing is applied and the meta is acknowledged the refusal with this message
    */
   default void adapt(Adaptation adaptation) {}
+
+  /**
+   * The entity's structural meta replaced its behaviors (flow 5 of the paper's §3.1: a behavior
+   * taught to or removed from its kind while it runs): the program takes what it must from them (a
+   * robot drops a schema its kind no longer has, at its next adaptation point). Called on the
+   * entity's object, when it processes the harmonization, never during {@link #react}. Does nothing
+   * by default.
+   */
+  default void harmonized(Behaviors<?> behaviors) {}
 }

@@ -10,7 +10,6 @@ import org.armgals.kernel.Notification;
 import org.armgals.kernel.StateEvent;
 import org.armgals.kernel.spi.MetaContext;
 import org.armgals.kernel.spi.MetaPolicy;
-import org.armgals.maam.Adaptation;
 import org.armgals.maam.RobotKind;
 
 /**
@@ -73,7 +72,6 @@ final class CaterpillarMeta implements MetaPolicy {
         && stride < CaterpillarTuning.MAX_STRIDE - 1e-9) {
       double longer =
           Math.min(CaterpillarTuning.MAX_STRIDE, stride + CaterpillarTuning.STRIDE_STEP);
-      Adaptation change = new Adaptation.ChangeModule(prototype.withStride(longer, phase));
       String what =
           String.format(Locale.ROOT, "stride %.2f -> %.2f rad (pacemaker changed)", stride, longer);
       String why =
@@ -83,7 +81,11 @@ final class CaterpillarMeta implements MetaPolicy {
               steps,
               progress * 100,
               CaterpillarTuning.SLOW_STEP * 100);
-      if (context.adapt(s.entity(), RobotKind.request(change)).isPresent()) {
+      var change =
+          RobotKind.changeModule(
+              CaterpillarSegment.PACEMAKER,
+              Map.of(CaterpillarSegment.STRIDE, longer, CaterpillarSegment.PHASE, phase));
+      if (context.adapt(s.entity(), change).isPresent()) {
         reasons.add(new String[] {what, why});
         changes.add(what);
         stride = longer;

@@ -18,6 +18,7 @@ import org.armgals.examples.robots.CaterpillarSignals.Beat;
 import org.armgals.examples.robots.CaterpillarSignals.Travel;
 import org.armgals.maam.AbstractRobot;
 import org.armgals.maam.Adaptation;
+import org.armgals.maam.BehaviorModule;
 import org.armgals.maam.CycleReport;
 import org.armgals.maam.Schema;
 import org.armgals.maam.spi.Body;
@@ -96,6 +97,23 @@ final class CaterpillarSegment extends AbstractRobot {
   protected void adapted(Adaptation change) {
     onAdapted.accept(change);
   }
+
+  /**
+   * The catalog a meta level of another runtime asks from: the {@code pacemaker} with a {@code
+   * stride} (radians) from a {@code phase}, a copy of the one the segment was built with.
+   */
+  @Override
+  protected BehaviorModule module(String name, Map<String, Object> parameters) {
+    if (name.equals(PACEMAKER)
+        && parameters.get(STRIDE) instanceof Number stride
+        && parameters.get(PHASE) instanceof Number phase) {
+      return pacemaker.withStride(stride.doubleValue(), phase.doubleValue());
+    }
+    return super.module(name, parameters);
+  }
+
+  /** The pacemaker's stride in a catalog request, radians. */
+  static final String STRIDE = "stride";
 
   /** What a segment shows its meta level: the robot's own, its beat's phase, its travel. */
   @Override

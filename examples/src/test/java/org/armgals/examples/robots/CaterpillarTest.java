@@ -21,7 +21,6 @@ import org.armgals.kernel.Entity;
 import org.armgals.kernel.ModelView;
 import org.armgals.kernel.StateEvent;
 import org.armgals.kernel.spi.MetaContext;
-import org.armgals.maam.Adaptation;
 import org.armgals.maam.sim.Simulation;
 import org.armgals.maam.spi.Atom;
 import org.armgals.maam.spi.LegBinding;
@@ -76,7 +75,8 @@ class CaterpillarTest {
             a ->
                 a instanceof org.armgals.kernel.Adaptation.ApplyBehavior b
                     && b.behavior().equals("changeModule")
-                    && b.input() instanceof Adaptation.ChangeModule);
+                    && b.input() instanceof Map<?, ?> m
+                    && CaterpillarSegment.PACEMAKER.equals(m.get("module")));
     assertThat(meta.stride()).isEqualTo(CaterpillarTuning.MAX_STRIDE);
     assertThat(meta.nextReason())
         .satisfies(r -> assertThat(r[0]).contains("stride 0.20 -> 0.30"))
@@ -127,7 +127,8 @@ class CaterpillarTest {
       seen.put("errors", 0L);
       seen.put(CaterpillarSegment.PHASE, phase);
       seen.put(CaterpillarSegment.X, x);
-      meta.onNotification(context, new StateEvent(HEAD, META, context.seq++, "cycle", seen, true));
+      meta.onNotification(
+          context, new StateEvent(HEAD, META, context.seq++, i * 10_000_000L, "cycle", seen, true));
     }
   }
 
