@@ -357,12 +357,17 @@ final class ScxmlReader {
           el.allow("event");
           String event = el.required("event");
           actions.add(guarded(el, () -> ScAction.raise(event)));
+        } else if (el.ns().equals(Scxml.NAMESPACE) && el.name().equals("log")) {
+          el.allow("label", "expr");
+          String label = el.attr("label");
+          String expr = el.attr("expr");
+          actions.add(guarded(el, () -> ScAction.log(label, expr == null ? null : expr.strip())));
         } else if (el.ns().equals(Scxml.ARM_NAMESPACE) && el.name().equals("action")) {
           el.allow("name");
           String name = el.required("name");
           actions.add(guarded(el, () -> ScAction.run(name)));
         } else {
-          throw unsupported(el, "<raise> and <arm:action>");
+          throw unsupported(el, "<raise>, <log> and <arm:action>");
         }
         if (!el.children().isEmpty()) {
           throw new ScxmlException("<" + el.tag() + "> must be empty", el.line());

@@ -192,6 +192,16 @@ final class ScxmlWriter {
             indent(depth).append("<arm:action name=\"").append(escape(r.name())).append("\"/>\n");
         case ScAction.Raise r ->
             indent(depth).append("<raise event=\"").append(escape(r.event())).append("\"/>\n");
+        case ScAction.Log l -> {
+          indent(depth).append("<log");
+          if (l.label() != null) {
+            out.append(" label=\"").append(escape(l.label())).append('"');
+          }
+          if (l.expr() != null) {
+            out.append(" expr=\"").append(escape(l.expr())).append('"');
+          }
+          out.append("/>\n");
+        }
       }
     }
   }
@@ -205,6 +215,10 @@ final class ScxmlWriter {
         .replace("<", "&lt;")
         .replace(">", "&gt;")
         .replace("\"", "&quot;")
-        .replace("'", "&apos;");
+        .replace("'", "&apos;")
+        // A parser turns these into spaces in an attribute's value; as references they stay.
+        .replace("\t", "&#9;")
+        .replace("\n", "&#10;")
+        .replace("\r", "&#13;");
   }
 }

@@ -350,6 +350,9 @@ final class Semantics {
       switch (a) {
         case ScAction.Run r -> actions.add(r.name());
         case ScAction.Raise r -> raised.add(r.event());
+        case ScAction.Log l -> {
+          // No effect: decision 0049.
+        }
       }
     }
   }

@@ -121,6 +121,20 @@ class W3cAlgorithmTest {
     passesAtStart("test436");
   }
 
+  // W3C 396: "the SCXML Processor MUST set _event.name to the name of the event" being processed,
+  // which is the name matched against the transitions' event descriptors.
+  @Test
+  void theEventsNameIsTheNameOfTheEventBeingProcessed_w3c396() {
+    passesAtStart("test396");
+  }
+
+  // W3C 449: conditions are converted to their effective boolean value (ECMAScript's ToBoolean):
+  // a non-empty string holds, an empty one, 0 and undefined do not.
+  @Test
+  void aConditionHoldsWhenItsValueConvertsToTrue_w3c449() {
+    passesAtStart("test449");
+  }
+
   // W3C 355: "in the absence of an 'initial' attribute the SCXML processor MUST enter the first
   // child in document order" -- and the eventless transition it enables is taken at start.
   @Test
