@@ -92,7 +92,7 @@ class ScxmlRoundTripTest {
       for (ScNode node : top) {
         inDocumentOrder(node, placed, transitions);
       }
-      ScDefinition generated = new ScDefinition("g" + seed, null, top, transitions);
+      ScDefinition generated = new ScDefinition("g" + seed, List.of(), top, transitions);
       assertThat(Scxml.read(Scxml.write(generated))).as("seed %d", seed).isEqualTo(generated);
     }
   }

@@ -29,10 +29,10 @@ class ScxmlTest {
   void readingGivesTheDocumentsStatesAndTransitions() {
     ScDefinition d = Scxml.read(robot());
     assertThat(d.name()).isEqualTo("explorer");
-    assertThat(d.initial()).isEqualTo("Active");
+    assertThat(d.initial()).containsExactly("Active");
     assertThat(d.states()).extracting(ScNode::id).containsExactly("Active", "Charging", "Off");
     ScNode active = d.states().get(0);
-    assertThat(active.initial()).isEqualTo("Exploring");
+    assertThat(active.initial()).containsExactly("Exploring");
     assertThat(active.children())
         .extracting(ScNode::kind)
         .containsExactly(ScNode.Kind.DEEP_HISTORY, ScNode.Kind.PARALLEL);
