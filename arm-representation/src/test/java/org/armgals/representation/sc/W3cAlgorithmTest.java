@@ -21,8 +21,8 @@ import org.junit.jupiter.params.provider.ValueSource;
  * The rules of the W3C SCXML algorithm (the recommendation's appendix D), each named after the
  * assertion it checks. The charts under {@code w3c/} reproduce the cases of W3C implementation
  * report tests and SCION tests named in their file names; they were written for armgals from the
- * recommendation's text and from what those tests check, without access to the suites' files. Each
- * W3C chart ends in the top-level final state {@code pass} when the rule holds.
+ * recommendation's text and from what those tests check, and are not copies of the suites' files.
+ * Each W3C chart ends in the top-level final state {@code pass} when the rule holds.
  */
 class W3cAlgorithmTest {
 
