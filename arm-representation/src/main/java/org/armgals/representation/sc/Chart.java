@@ -161,18 +161,28 @@ final class Chart {
 
   private void resolve(Node node, ScNode source) {
     if (node.isCompound()) {
-      String initial = source.initial();
-      Node target = initial == null ? node.stateChildren().get(0) : node(initial, "initial");
-      boolean legal = target.isHistory() ? target.parent == node : target.isDescendantOf(node);
-      if (!legal) {
-        throw new IllegalArgumentException(
-            "initial '"
-                + initial
-                + "' of '"
-                + node.id
-                + "' is not a state inside it nor one of its history pseudo-states");
+      List<String> ids = source.initial();
+      if (ids.isEmpty()) {
+        node.initial.add(node.stateChildren().get(0));
+      } else {
+        for (String id : ids) {
+          Node target = node(id, "initial");
+          boolean legal =
+              target.isHistory()
+                  ? target.parent == node && ids.size() == 1
+                  : target.isDescendantOf(node);
+          if (!legal) {
+            throw new IllegalArgumentException(
+                "initial '"
+                    + id
+                    + "' of '"
+                    + node.id
+                    + "' is not a state inside it nor (alone) one of its history pseudo-states");
+          }
+          node.initial.add(target);
+        }
+        requireTogether(node.initial, "initial " + ids + " of '" + node.id + "'");
       }
-      node.initial.add(target);
     }
     if (node.isHistory()) {
       // Parents come before their children in the map, so the parent's initial is resolved.
@@ -207,6 +217,38 @@ final class Chart {
                   + "' is in '"
                   + parent.id
                   + "', which has no state to remember");
+        }
+      }
+    }
+  }
+
+  /**
+   * Checks that {@code targets} can be entered together: no two of them are the same state, one
+   * inside the other, or in one compound state (a history stands for its parent's states).
+   *
+   * @throws IllegalArgumentException naming {@code what} and the two that cannot
+   */
+  static void requireTogether(List<Node> targets, String what) {
+    for (int i = 0; i < targets.size(); i++) {
+      for (int j = i + 1; j < targets.size(); j++) {
+        Node a = targets.get(i);
+        Node b = targets.get(j);
+        Node x = a.isHistory() ? requireNonNull(a.parent) : a;
+        Node y = b.isHistory() ? requireNonNull(b.parent) : b;
+        Node common = x.parent;
+        while (common != null && !(y.isDescendantOf(common))) {
+          common = common.parent;
+        }
+        boolean nested = x == y || x.isDescendantOf(y) || y.isDescendantOf(x);
+        if (nested || common == null || !common.isParallel()) {
+          throw new IllegalArgumentException(
+              what
+                  + ": '"
+                  + a.id
+                  + "' and '"
+                  + b.id
+                  + "' cannot be active together; expected states in different regions of a"
+                  + " parallel state");
         }
       }
     }

@@ -6,7 +6,6 @@ import java.math.BigDecimal;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.Objects;
 import org.jspecify.annotations.Nullable;
 
 /**
@@ -75,9 +74,11 @@ final class Condition {
     return states;
   }
 
-  /** Whether the condition holds in {@code context}. */
+  /**
+   * Whether the condition holds in {@code context}: its value converted as ECMAScript's ToBoolean.
+   */
   boolean holds(Context context) {
-    return Boolean.TRUE.equals(value(expr, context));
+    return truthy(value(expr, context));
   }
 
   @Override
@@ -85,68 +86,168 @@ final class Condition {
     return text;
   }
 
+  /** ECMAScript's {@code undefined}: a missing field, or the name of an event not known. */
+  private enum Undefined {
+    UNDEFINED;
+
+    @Override
+    public String toString() {
+      return "undefined";
+    }
+  }
+
+  private static final Object UNDEFINED = Undefined.UNDEFINED;
+
   private static @Nullable Object value(Expr e, Context c) {
     return switch (e) {
       case Literal l -> l.value();
-      case EventName n -> c.eventName();
+      case EventName n -> c.eventName() == null ? UNDEFINED : c.eventName();
       case EventData d -> field(c.eventData(), d.path());
       case In in -> c.configuration().isActive(in.state());
-      case Not n -> !Boolean.TRUE.equals(value(n.operand(), c));
-      case And a ->
-          Boolean.TRUE.equals(value(a.left(), c)) && Boolean.TRUE.equals(value(a.right(), c));
-      case Or o ->
-          Boolean.TRUE.equals(value(o.left(), c)) || Boolean.TRUE.equals(value(o.right(), c));
+      case Not n -> !truthy(value(n.operand(), c));
+      // ECMAScript's && and || answer one of their operands.
+      case And a -> {
+        Object left = value(a.left(), c);
+        yield truthy(left) ? value(a.right(), c) : left;
+      }
+      case Or o -> {
+        Object left = value(o.left(), c);
+        yield truthy(left) ? left : value(o.right(), c);
+      }
       case Compare cmp -> compare(cmp.op(), value(cmp.left(), c), value(cmp.right(), c));
     };
   }
 
+  /** {@code _event.data} and its fields: a missing field (or a field of a non-map) is undefined. */
   private static @Nullable Object field(@Nullable Object data, List<String> path) {
-    Object v = data;
+    Object v = data == null ? UNDEFINED : data;
     for (String key : path) {
-      if (!(v instanceof Map<?, ?> m)) {
-        return null;
+      if (!(v instanceof Map<?, ?> m) || !m.containsKey(key)) {
+        return UNDEFINED;
       }
       v = m.get(key);
     }
     return v;
   }
 
-  private static boolean compare(String op, @Nullable Object a, @Nullable Object b) {
-    if (a instanceof Number x && b instanceof Number y) {
-      int c = numeric(x, y);
-      return switch (op) {
-        case "==", "===" -> c == 0;
-        case "!=", "!==" -> c != 0;
-        case "<" -> c < 0;
-        case "<=" -> c <= 0;
-        case ">" -> c > 0;
-        default -> c >= 0;
-      };
-    }
-    return switch (op) {
-      case "==", "===" -> Objects.equals(a, b);
-      case "!=", "!==" -> !Objects.equals(a, b);
-      default -> {
-        if (a instanceof String x && b instanceof String y) {
-          int c = x.compareTo(y);
-          yield switch (op) {
-            case "<" -> c < 0;
-            case "<=" -> c <= 0;
-            case ">" -> c > 0;
-            default -> c >= 0;
-          };
-        }
-        yield false;
+  /** ECMAScript's ToBoolean. */
+  private static boolean truthy(@Nullable Object v) {
+    return switch (v) {
+      case null -> false;
+      case Undefined u -> false;
+      case Boolean b -> b;
+      case Number n -> {
+        double d = n.doubleValue();
+        yield d != 0 && !Double.isNaN(d);
       }
+      case String s -> !s.isEmpty();
+      default -> true;
     };
   }
 
-  private static int numeric(Number x, Number y) {
-    try {
-      return new BigDecimal(x.toString()).compareTo(new BigDecimal(y.toString()));
-    } catch (NumberFormatException e) {
-      return Double.compare(x.doubleValue(), y.doubleValue()); // NaN and the infinities
+  private static boolean compare(String op, @Nullable Object a, @Nullable Object b) {
+    return switch (op) {
+      case "===" -> strictlyEqual(a, b);
+      case "!==" -> !strictlyEqual(a, b);
+      case "==" -> looselyEqual(a, b);
+      case "!=" -> !looselyEqual(a, b);
+      case "<" -> less(a, b, false);
+      case ">" -> less(b, a, false);
+      case "<=" -> less(a, b, true);
+      default -> less(b, a, true);
+    };
+  }
+
+  /** ECMAScript's {@code ===}; objects (maps, lists, anything else) compare by {@code equals}. */
+  private static boolean strictlyEqual(@Nullable Object a, @Nullable Object b) {
+    if (a instanceof Number x && b instanceof Number y) {
+      return numeric(x.doubleValue(), y.doubleValue(), x, y) == 0;
     }
+    if (a == null || b == null || a == UNDEFINED || b == UNDEFINED) {
+      return a == b;
+    }
+    return a.equals(b);
+  }
+
+  /**
+   * ECMAScript's {@code ==}: null and undefined are equal; numbers, strings and booleans convert.
+   */
+  private static boolean looselyEqual(@Nullable Object a, @Nullable Object b) {
+    boolean aNil = a == null || a == UNDEFINED;
+    boolean bNil = b == null || b == UNDEFINED;
+    if (aNil || bNil) {
+      return aNil && bNil;
+    }
+    if (a instanceof Boolean x) {
+      return looselyEqual(x ? 1 : 0, b);
+    }
+    if (b instanceof Boolean y) {
+      return looselyEqual(a, y ? 1 : 0);
+    }
+    if (a instanceof Number && b instanceof String || a instanceof String && b instanceof Number) {
+      double x = number(a);
+      double y = number(b);
+      return x == y; // false for NaN
+    }
+    return strictlyEqual(a, b);
+  }
+
+  /**
+   * ECMAScript's {@code a < b} ({@code a <= b} when {@code orEqual}): strings compare by their
+   * UTF-16 code units, anything else as numbers, and NaN (undefined, a string that is no number, an
+   * object) compares false.
+   */
+  private static boolean less(@Nullable Object a, @Nullable Object b, boolean orEqual) {
+    if (a instanceof String x && b instanceof String y) {
+      int c = x.compareTo(y);
+      return orEqual ? c <= 0 : c < 0;
+    }
+    double x = number(a);
+    double y = number(b);
+    if (Double.isNaN(x) || Double.isNaN(y)) {
+      return false;
+    }
+    int c = numeric(x, y, a, b);
+    return orEqual ? c <= 0 : c < 0;
+  }
+
+  /** ECMAScript's ToNumber, for the values the language has. */
+  private static double number(@Nullable Object v) {
+    return switch (v) {
+      case null -> 0;
+      case Number n -> n.doubleValue();
+      case Boolean b -> b ? 1 : 0;
+      case String s -> {
+        String t = s.strip();
+        if (t.isEmpty()) {
+          yield 0;
+        }
+        if (t.matches("0[xX][0-9a-fA-F]+")) {
+          yield new java.math.BigInteger(t.substring(2), 16).doubleValue();
+        }
+        yield t.matches("[+-]?(\\d+\\.?\\d*([eE][+-]?\\d+)?|\\.\\d+([eE][+-]?\\d+)?|Infinity)")
+            ? Double.parseDouble(t)
+            : Double.NaN;
+      }
+      default -> Double.NaN; // undefined, and objects
+    };
+  }
+
+  /**
+   * Compares two numbers that are not NaN: exactly by value when both are finite Java numbers (so
+   * that a {@code long} beyond a double's precision keeps it), else as doubles.
+   */
+  private static int numeric(double x, double y, @Nullable Object a, @Nullable Object b) {
+    if (Double.isNaN(x) || Double.isNaN(y)) {
+      return Double.isNaN(x) && Double.isNaN(y) ? 1 : -1; // never 0: NaN equals nothing
+    }
+    if (a instanceof Number p
+        && b instanceof Number q
+        && Double.isFinite(x)
+        && Double.isFinite(y)) {
+      return new BigDecimal(p.toString()).compareTo(new BigDecimal(q.toString()));
+    }
+    return Double.compare(x, y) == 0 || x == y ? 0 : Double.compare(x, y);
   }
 
   /** A recursive-descent parser of the language. */
@@ -246,7 +347,8 @@ final class Condition {
       return switch (word) {
         case "true" -> new Literal(Boolean.TRUE);
         case "false" -> new Literal(Boolean.FALSE);
-        case "null", "undefined" -> new Literal(null);
+        case "null" -> new Literal(null);
+        case "undefined" -> new Literal(UNDEFINED);
         case "In" -> in();
         case "_event.name" -> new EventName();
         case "_event.data" -> new EventData(List.of());

@@ -4,14 +4,13 @@ import static java.util.Objects.requireNonNull;
 
 import java.util.Arrays;
 import java.util.List;
-import org.jspecify.annotations.Nullable;
 
 /**
  * A state of a statechart definition ({@code <state>}, {@code <parallel>}, {@code <final>} or
  * {@code <history>} in SCXML) with its children.
  *
  * <p>A {@link Kind#STATE} with state children is compound: it enters {@link #initial()} (its first
- * child when null; a history child enters what the history says) by default; without them it is
+ * child when empty; a history child enters what the history says) by default; without them it is
  * atomic. A {@link Kind#PARALLEL} has orthogonal regions, all active together. A history
  * pseudo-state remembers the active children ({@link Kind#SHALLOW_HISTORY}) or atomic descendants
  * ({@link Kind#DEEP_HISTORY}) of its parent when the parent is exited; a transition to it restores
@@ -19,8 +18,9 @@ import org.jspecify.annotations.Nullable;
  *
  * @param id unique in the chart
  * @param kind what the node is
- * @param initial for a compound state, the descendant (or history child) entered by default; null
- *     for its first child
+ * @param initial for a compound state, what it enters by default: one descendant or history child,
+ *     or descendants in different regions of a parallel state (SCXML's {@code initial="a b"});
+ *     empty for its first child
  * @param onEntry actions on entry, in order
  * @param onExit actions on exit, in order
  * @param historyDefault for a history pseudo-state, where it leads before anything is remembered
@@ -33,7 +33,7 @@ import org.jspecify.annotations.Nullable;
 public record ScNode(
     String id,
     Kind kind,
-    @Nullable String initial,
+    List<String> initial,
     List<ScAction> onEntry,
     List<ScAction> onExit,
     List<String> historyDefault,
@@ -69,6 +69,7 @@ public record ScNode(
   public ScNode {
     ScNames.requireName(id, "state id");
     requireNonNull(kind, "kind");
+    initial = ScNames.requireNames(initial, "initial of '" + id + "'");
     onEntry = List.copyOf(requireNonNull(onEntry, "onEntry"));
     onExit = List.copyOf(requireNonNull(onExit, "onExit"));
     historyDefault = ScNames.requireNames(historyDefault, "history default of '" + id + "'");
@@ -84,7 +85,7 @@ public record ScNode(
       throw new IllegalArgumentException(
           kind + " '" + id + "' has a history default; only a history has one");
     }
-    if (!defaultActions.isEmpty() && initial == null && historyDefault.isEmpty()) {
+    if (!defaultActions.isEmpty() && initial.isEmpty() && historyDefault.isEmpty()) {
       throw new IllegalArgumentException(
           kind
               + " '"
@@ -92,8 +93,7 @@ public record ScNode(
               + "' has default actions; only a state with an initial or a history with a default"
               + " has them");
     }
-    if (initial != null) {
-      ScNames.requireName(initial, "initial of '" + id + "'");
+    if (!initial.isEmpty()) {
       if (kind != Kind.STATE || children.stream().allMatch(c -> c.kind().isHistory())) {
         throw new IllegalArgumentException(
             kind + " '" + id + "' has initial '" + initial + "'; only a compound state has one");
@@ -105,7 +105,7 @@ public record ScNode(
   public ScNode(
       String id,
       Kind kind,
-      @Nullable String initial,
+      List<String> initial,
       List<ScAction> onEntry,
       List<ScAction> onExit,
       List<String> historyDefault,
@@ -116,18 +116,18 @@ public record ScNode(
   /** A state: atomic without children, compound with them. */
   public static ScNode state(String id, ScNode... children) {
     return new ScNode(
-        id, Kind.STATE, null, List.of(), List.of(), List.of(), Arrays.asList(children));
+        id, Kind.STATE, List.of(), List.of(), List.of(), List.of(), Arrays.asList(children));
   }
 
   /** A parallel state whose children are its regions. */
   public static ScNode parallel(String id, ScNode... regions) {
     return new ScNode(
-        id, Kind.PARALLEL, null, List.of(), List.of(), List.of(), Arrays.asList(regions));
+        id, Kind.PARALLEL, List.of(), List.of(), List.of(), List.of(), Arrays.asList(regions));
   }
 
   /** A final state. */
   public static ScNode finalState(String id) {
-    return new ScNode(id, Kind.FINAL, null, List.of(), List.of(), List.of(), List.of());
+    return new ScNode(id, Kind.FINAL, List.of(), List.of(), List.of(), List.of(), List.of());
   }
 
   /** A history pseudo-state, deep or shallow, leading to {@code defaults} the first time. */
@@ -135,16 +135,27 @@ public record ScNode(
     return new ScNode(
         id,
         deep ? Kind.DEEP_HISTORY : Kind.SHALLOW_HISTORY,
-        null,
+        List.of(),
         List.of(),
         List.of(),
         Arrays.asList(defaults),
         List.of());
   }
 
-  /** This node with {@code initial} as its default descendant. */
-  public ScNode withInitial(String initial) {
-    return new ScNode(id, kind, initial, onEntry, onExit, historyDefault, children, defaultActions);
+  /**
+   * This node entering {@code initial} by default: one descendant or history child, or descendants
+   * in different regions of a parallel state.
+   */
+  public ScNode withInitial(String... initial) {
+    return new ScNode(
+        id,
+        kind,
+        Arrays.asList(initial),
+        onEntry,
+        onExit,
+        historyDefault,
+        children,
+        defaultActions);
   }
 
   /** This node with {@code actions} on entry. */

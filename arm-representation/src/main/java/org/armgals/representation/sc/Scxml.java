@@ -8,8 +8,9 @@ import java.io.StringReader;
 /**
  * Reads and writes statechart definitions in a subset of W3C SCXML 1.0 (docs/representations.md
  * lists it): {@code scxml}, {@code state}, {@code parallel}, {@code final}, {@code initial}, {@code
- * history}, {@code transition} (event, cond as a guard name, target, type), {@code onentry} and
- * {@code onexit} holding {@code raise} and {@code arm:action} (namespace {@value #ARM_NAMESPACE}).
+ * history}, {@code transition} (event, cond as a guard's name or in the condition language, target,
+ * type), executable content ({@code raise}, {@code log}, and {@code arm:action} of the namespace
+ * {@value #ARM_NAMESPACE}) in {@code onentry}, {@code onexit}, transitions and default transitions.
  * Anything else is refused with an {@link ScxmlException} naming the element and its line.
  *
  * <p>Transitions get their id from an {@code arm:id} attribute, or else {@code source#n}, the n-th

@@ -179,7 +179,7 @@ final class ScxmlReader {
           () ->
               new ScDefinition(
                   name == null ? "statechart" : name.strip(),
-                  single(scxml, "initial"),
+                  tokens(scxml.attr("initial")),
                   states,
                   transitions));
     }
@@ -192,7 +192,7 @@ final class ScxmlReader {
         default -> el.allow("id");
       }
       String id = el.required("id");
-      @Nullable String initial = kind.equals("state") ? single(el, "initial") : null;
+      List<String> initial = kind.equals("state") ? tokens(el.attr("initial")) : List.of();
       List<ScAction> onEntry = new ArrayList<>();
       List<ScAction> onExit = new ArrayList<>();
       List<String> historyDefault = new ArrayList<>();
@@ -221,7 +221,7 @@ final class ScxmlReader {
               "parallel/history" ->
               children.add(node(child));
           case "state/initial" -> {
-            if (initial != null) {
+            if (!initial.isEmpty()) {
               throw new ScxmlException(
                   "<state id=\"" + id + "\"> has both an initial attribute and <initial>",
                   child.line());
@@ -249,7 +249,7 @@ final class ScxmlReader {
             case "final" -> ScNode.Kind.FINAL;
             default -> historyKind(el);
           };
-      String init = initial;
+      List<String> init = initial;
       return guarded(
           el,
           () -> new ScNode(id, k, init, onEntry, onExit, historyDefault, children, defaultActions));
@@ -267,19 +267,13 @@ final class ScxmlReader {
           "history type '" + type + "' is not supported; expected 'shallow' or 'deep'", el.line());
     }
 
-    private static String initialChild(El initial) {
+    private static List<String> initialChild(El initial) {
       initial.allow();
       if (initial.children().size() != 1
           || !scxmlName(initial.children().get(0)).equals("transition")) {
         throw new ScxmlException("<initial> must hold exactly one <transition>", initial.line());
       }
-      List<String> targets = targetOnly(initial.children().get(0));
-      if (targets.size() != 1) {
-        throw new ScxmlException(
-            "<initial>'s transition targets " + targets + "; expected exactly one state",
-            initial.line());
-      }
-      return targets.get(0);
+      return targetOnly(initial.children().get(0));
     }
 
     /**
@@ -357,32 +351,23 @@ final class ScxmlReader {
           el.allow("event");
           String event = el.required("event");
           actions.add(guarded(el, () -> ScAction.raise(event)));
+        } else if (el.ns().equals(Scxml.NAMESPACE) && el.name().equals("log")) {
+          el.allow("label", "expr");
+          String label = el.attr("label");
+          String expr = el.attr("expr");
+          actions.add(guarded(el, () -> ScAction.log(label, expr == null ? null : expr.strip())));
         } else if (el.ns().equals(Scxml.ARM_NAMESPACE) && el.name().equals("action")) {
           el.allow("name");
           String name = el.required("name");
           actions.add(guarded(el, () -> ScAction.run(name)));
         } else {
-          throw unsupported(el, "<raise> and <arm:action>");
+          throw unsupported(el, "<raise>, <log> and <arm:action>");
         }
         if (!el.children().isEmpty()) {
           throw new ScxmlException("<" + el.tag() + "> must be empty", el.line());
         }
       }
       return actions;
-    }
-
-    private static @Nullable String single(El el, String attribute) {
-      String value = el.attr(attribute);
-      if (value == null) {
-        return null;
-      }
-      List<String> ids = tokens(value);
-      if (ids.size() != 1) {
-        throw new ScxmlException(
-            attribute + " '" + value + "' of <" + el.tag() + "> is not supported; expected one id",
-            el.line());
-      }
-      return ids.get(0);
     }
 
     /** The SCXML local name of {@code el}, refusing elements of other namespaces. */

@@ -1,7 +1,5 @@
 package org.armgals.representation.sc;
 
-import static java.util.Objects.requireNonNull;
-
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
@@ -62,8 +60,11 @@ final class ScxmlWriter {
         .append("\" version=\"1.0\" name=\"")
         .append(escape(definition.name()))
         .append('"');
-    if (definition.initial() != null) {
-      w.out.append(" initial=\"").append(escape(definition.initial())).append('"');
+    if (!definition.initial().isEmpty()) {
+      w.out
+          .append(" initial=\"")
+          .append(escape(String.join(" ", definition.initial())))
+          .append('"');
     }
     w.out.append(">\n");
     for (ScNode n : definition.states()) {
@@ -89,9 +90,9 @@ final class ScxmlWriter {
           case SHALLOW_HISTORY, DEEP_HISTORY -> "history";
         };
     indent(depth).append('<').append(tag).append(" id=\"").append(escape(node.id())).append('"');
-    boolean initialElement = node.initial() != null && !node.defaultActions().isEmpty();
-    if (node.initial() != null && !initialElement) {
-      out.append(" initial=\"").append(escape(node.initial())).append('"');
+    boolean initialElement = !node.initial().isEmpty() && !node.defaultActions().isEmpty();
+    if (!node.initial().isEmpty() && !initialElement) {
+      out.append(" initial=\"").append(escape(String.join(" ", node.initial()))).append('"');
     }
     if (node.kind() == ScNode.Kind.DEEP_HISTORY) {
       out.append(" type=\"deep\"");
@@ -110,7 +111,7 @@ final class ScxmlWriter {
     out.append(">\n");
     if (initialElement) {
       indent(depth + 1).append("<initial>\n");
-      defaultTransition(List.of(requireNonNull(node.initial())), node.defaultActions(), depth + 2);
+      defaultTransition(node.initial(), node.defaultActions(), depth + 2);
       indent(depth + 1).append("</initial>\n");
     }
     content("onentry", node.onEntry(), depth + 1);
@@ -192,6 +193,16 @@ final class ScxmlWriter {
             indent(depth).append("<arm:action name=\"").append(escape(r.name())).append("\"/>\n");
         case ScAction.Raise r ->
             indent(depth).append("<raise event=\"").append(escape(r.event())).append("\"/>\n");
+        case ScAction.Log l -> {
+          indent(depth).append("<log");
+          if (l.label() != null) {
+            out.append(" label=\"").append(escape(l.label())).append('"');
+          }
+          if (l.expr() != null) {
+            out.append(" expr=\"").append(escape(l.expr())).append('"');
+          }
+          out.append("/>\n");
+        }
       }
     }
   }
@@ -205,6 +216,10 @@ final class ScxmlWriter {
         .replace("<", "&lt;")
         .replace(">", "&gt;")
         .replace("\"", "&quot;")
-        .replace("'", "&apos;");
+        .replace("'", "&apos;")
+        // A parser turns these into spaces in an attribute's value; as references they stay.
+        .replace("\t", "&#9;")
+        .replace("\n", "&#10;")
+        .replace("\r", "&#13;");
   }
 }

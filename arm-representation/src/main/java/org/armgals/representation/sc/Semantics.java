@@ -57,9 +57,11 @@ final class Semantics {
               + t.source()
               + "'; expected a state or parallel state");
     }
+    List<Node> targets = new ArrayList<>();
     for (String target : t.targets()) {
-      chart.node(target, "target of transition '" + t.id() + "'");
+      targets.add(chart.node(target, "target of transition '" + t.id() + "'"));
     }
+    Chart.requireTogether(targets, "targets of transition '" + t.id() + "'");
     String cond = t.cond();
     if (cond != null && !guards.containsKey(cond)) {
       Condition c;
@@ -350,6 +352,9 @@ final class Semantics {
       switch (a) {
         case ScAction.Run r -> actions.add(r.name());
         case ScAction.Raise r -> raised.add(r.event());
+        case ScAction.Log l -> {
+          // No effect: decision 0049.
+        }
       }
     }
   }

@@ -28,8 +28,9 @@ public interface Statechart extends StateSpace<Configuration> {
    * _event.name} and {@code _event.data} fields: docs/representations.md).
    *
    * @throws IllegalArgumentException if the definition does not hold together (an id used twice, an
-   *     initial or target naming no state, a condition that is neither a guard's name nor in the
-   *     condition language, a start that does not come to rest), with the culprit named
+   *     initial or target naming no state, initial states or targets that cannot be active
+   *     together, a condition that is neither a guard's name nor in the condition language, a start
+   *     that does not come to rest), with the culprit named
    */
   static Statechart of(ScDefinition definition, Map<String, Guard> guards) {
     return new StatechartImpl(

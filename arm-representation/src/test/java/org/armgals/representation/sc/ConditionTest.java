@@ -3,6 +3,7 @@ package org.armgals.representation.sc;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -68,6 +69,94 @@ class ConditionTest {
     assertThat(holds("!In('B') && In('A')", null, null)).isTrue();
     assertThat(holds("!(In('A') || false)", null, null)).isFalse();
     assertThat(holds("!!true", null, null)).isTrue();
+  }
+
+  // W3C 449 (section B.2.3): "the SCXML processor MUST convert ECMAScript expressions used in
+  // conditional expressions into their effective boolean value using the ToBoolean operator".
+  @Test
+  void aConditionsValueIsConvertedByToBoolean_w3c449() {
+    Map<String, Object> data = new HashMap<>();
+    data.put("zero", 0);
+    data.put("nan", Double.NaN);
+    data.put("empty", "");
+    data.put("text", "no");
+    data.put("nothing", null);
+    data.put("object", Map.of());
+    assertThat(holds("'foo'", null, null)).isTrue();
+    assertThat(holds("''", null, null)).isFalse();
+    assertThat(holds("0", null, null)).isFalse();
+    assertThat(holds("-2.5", null, null)).isTrue();
+    assertThat(holds("null", null, null)).isFalse();
+    assertThat(holds("undefined", null, null)).isFalse();
+    assertThat(holds("_event.data.zero", "e", data)).isFalse();
+    assertThat(holds("_event.data.nan", "e", data)).isFalse();
+    assertThat(holds("_event.data.empty", "e", data)).isFalse();
+    assertThat(holds("_event.data.text", "e", data)).isTrue();
+    assertThat(holds("_event.data.nothing", "e", data)).isFalse();
+    assertThat(holds("_event.data.missing", "e", data)).isFalse();
+    assertThat(holds("_event.data.object", "e", data)).isTrue();
+    assertThat(holds("!_event.data.text", "e", data)).isFalse();
+    assertThat(holds("!''", null, null)).isTrue();
+  }
+
+  // ECMAScript's == converts numbers, strings and booleans and takes null and undefined as equal;
+  // === does not convert; a field the data does not have is undefined.
+  @Test
+  void equalityConvertsAsEcmascriptsEqualityOperatorsDo() {
+    Map<String, Object> data = new HashMap<>();
+    data.put("n", 1);
+    data.put("s", "1");
+    data.put("nothing", null);
+    assertThat(holds("_event.data.s == 1", "e", data)).isTrue();
+    assertThat(holds("_event.data.s === 1", "e", data)).isFalse();
+    assertThat(holds("_event.data.n === 1.0", "e", data)).isTrue();
+    assertThat(holds("_event.data.n == true", "e", data)).isTrue();
+    assertThat(holds("_event.data.s != true", "e", data)).isFalse();
+    assertThat(holds("'' == 0", null, null)).isTrue();
+    assertThat(holds("'x' == 0", null, null)).isFalse();
+    assertThat(holds("null == undefined", null, null)).isTrue();
+    assertThat(holds("null === undefined", null, null)).isFalse();
+    assertThat(holds("null == 0", null, null)).isFalse();
+    assertThat(holds("_event.data.missing === undefined", "e", data)).isTrue();
+    assertThat(holds("_event.data.missing === null", "e", data)).isFalse();
+    assertThat(holds("_event.data.nothing === null", "e", data)).isTrue();
+    assertThat(holds("_event.data === undefined", "e", null)).isTrue();
+    assertThat(holds("_event.name === undefined", null, null)).isTrue();
+    Map<String, Object> nan = Map.of("x", Double.NaN);
+    assertThat(holds("_event.data.x == _event.data.x", "e", nan)).isFalse();
+    assertThat(holds("_event.data.x != _event.data.x", "e", nan)).isTrue();
+  }
+
+  // ECMAScript's relational operators: two strings compare by code units, anything else as
+  // numbers (null is 0, true is 1, undefined and a string that is no number are NaN, which
+  // compares false).
+  @Test
+  void orderingComparesStringsAsStringsAndAnythingElseAsNumbers() {
+    assertThat(holds("'10' < '9'", null, null)).isTrue();
+    assertThat(holds("'10' < 9", null, null)).isFalse();
+    assertThat(holds("' 12 ' > 11", null, null)).isTrue();
+    assertThat(holds("'0x10' == 16", null, null)).isTrue();
+    assertThat(holds("null < 1", null, null)).isTrue();
+    assertThat(holds("null >= 0", null, null)).isTrue();
+    assertThat(holds("true > 0", null, null)).isTrue();
+    assertThat(holds("undefined < 1", null, null)).isFalse();
+    assertThat(holds("undefined >= 1", null, null)).isFalse();
+    assertThat(holds("'abc' <= 1", null, null)).isFalse();
+    assertThat(holds("'abc' > 1", null, null)).isFalse();
+    assertThat(holds("2 <= 2", null, null)).isTrue();
+    assertThat(holds("3 <= 2", null, null)).isFalse();
+    assertThat(holds("3 >= 2", null, null)).isTrue();
+    assertThat(holds("_event.data > 9007199254740992", "e", 9007199254740993L)).isTrue();
+  }
+
+  // ECMAScript's && and || answer one of their operands, which a comparison may then read.
+  @Test
+  void andAndOrAnswerOneOfTheirOperands() {
+    Map<String, Object> data = Map.of("mode", "fast");
+    assertThat(holds("(_event.data.missing || 'eco') == 'eco'", "e", data)).isTrue();
+    assertThat(holds("(_event.data.mode || 'eco') == 'eco'", "e", data)).isFalse();
+    assertThat(holds("(0 && 'x') === 0", null, null)).isTrue();
+    assertThat(holds("(1 && 'x') === 'x'", null, null)).isTrue();
   }
 
   @ParameterizedTest

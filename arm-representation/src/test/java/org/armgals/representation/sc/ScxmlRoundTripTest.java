@@ -85,14 +85,18 @@ class ScxmlRoundTripTest {
         String source = sources.get(random.nextInt(sources.size()));
         String target = sources.get(random.nextInt(sources.size()));
         ScTransition t = ScTransition.on("t" + i, source, "e" + random.nextInt(3), target);
-        t = random.nextBoolean() ? t : t.doing(ScAction.raise("r"));
+        t = random.nextBoolean() ? t : t.doing(actions(random));
+        t = random.nextBoolean() ? t : t.when("In('" + target + "') || _event.name < 'e1'");
+        t = random.nextInt(4) > 0 ? t : t.asInternal();
         placed.computeIfAbsent(source, k -> new ArrayList<>()).add(Map.entry(random.nextInt(4), t));
       }
       List<ScTransition> transitions = new ArrayList<>();
       for (ScNode node : top) {
         inDocumentOrder(node, placed, transitions);
       }
-      ScDefinition generated = new ScDefinition("g" + seed, null, top, transitions);
+      List<String> initial =
+          random.nextBoolean() ? List.of() : List.of(top.get(random.nextInt(top.size())).id());
+      ScDefinition generated = new ScDefinition("g" + seed, initial, top, transitions);
       assertThat(Scxml.read(Scxml.write(generated))).as("seed %d", seed).isEqualTo(generated);
     }
   }
@@ -121,16 +125,51 @@ class ScxmlRoundTripTest {
     String id = "s" + next[0]++;
     int kind = depth > 2 ? 0 : random.nextInt(4);
     if (kind == 3 && !inParallel) {
-      return ScNode.finalState(id);
+      return ScNode.finalState(id).onEntry(actions(random));
     }
     sources.add(id);
     if (kind == 0 || kind == 3) {
-      return ScNode.state(id).onEntry(ScAction.run("in" + id));
+      return ScNode.state(id).onEntry(ScAction.run("in" + id)).onExit(actions(random));
     }
-    ScNode[] children = new ScNode[1 + random.nextInt(3)];
-    for (int i = 0; i < children.length; i++) {
-      children[i] = node(random, depth + 1, kind == 2, next, sources);
+    List<ScNode> children = new ArrayList<>();
+    for (int i = 1 + random.nextInt(3); i > 0; i--) {
+      children.add(node(random, depth + 1, kind == 2, next, sources));
     }
-    return kind == 1 ? ScNode.state(id, children) : ScNode.parallel(id, children);
+    if (random.nextInt(3) == 0) {
+      String target = children.get(random.nextInt(children.size())).id();
+      ScNode history = ScNode.history(id + "h", random.nextBoolean(), target);
+      children.add(
+          random.nextInt(children.size() + 1),
+          random.nextBoolean() ? history : history.onDefault(actions(random)));
+    }
+    ScNode node =
+        kind == 1
+            ? ScNode.state(id, children.toArray(ScNode[]::new))
+            : ScNode.parallel(id, children.toArray(ScNode[]::new));
+    node = node.onEntry(actions(random));
+    if (kind == 1 && random.nextBoolean()) {
+      String first = children.get(random.nextInt(children.size())).id();
+      node = node.withInitial(first);
+      if (random.nextBoolean()) {
+        node = node.onDefault(actions(random));
+      }
+    }
+    return node;
+  }
+
+  /** Zero to two actions of any kind, text with markup, tabs and line breaks included. */
+  private static ScAction[] actions(Random random) {
+    ScAction[] all = {
+      ScAction.run("a&b"),
+      ScAction.raise("r.x"),
+      ScAction.log("<\"label\">", "_event.data.n >= 2 &&\n\t'x' != \"y\""),
+      ScAction.log(null, null),
+      ScAction.log("only", null)
+    };
+    ScAction[] chosen = new ScAction[random.nextInt(3)];
+    for (int i = 0; i < chosen.length; i++) {
+      chosen[i] = all[random.nextInt(all.length)];
+    }
+    return chosen;
   }
 }

@@ -29,10 +29,10 @@ class ScxmlTest {
   void readingGivesTheDocumentsStatesAndTransitions() {
     ScDefinition d = Scxml.read(robot());
     assertThat(d.name()).isEqualTo("explorer");
-    assertThat(d.initial()).isEqualTo("Active");
+    assertThat(d.initial()).containsExactly("Active");
     assertThat(d.states()).extracting(ScNode::id).containsExactly("Active", "Charging", "Off");
     ScNode active = d.states().get(0);
-    assertThat(active.initial()).isEqualTo("Exploring");
+    assertThat(active.initial()).containsExactly("Exploring");
     assertThat(active.children())
         .extracting(ScNode::kind)
         .containsExactly(ScNode.Kind.DEEP_HISTORY, ScNode.Kind.PARALLEL);
@@ -194,6 +194,68 @@ class ScxmlTest {
     assertThat(d.transitions())
         .extracting(ScTransition::cond)
         .containsExactly("_event.data.speed > 10 && In('A')", "ready");
+  }
+
+  // A <log> is kept in the definition and written back, and has no effect when the chart runs
+  // (decision 0049): a step's result lists only the actions the entity runs.
+  @Test
+  void aLogIsKeptAndWrittenBackAndHasNoEffect() {
+    ScDefinition d =
+        Scxml.read(
+            """
+            <scxml xmlns="http://www.w3.org/2005/07/scxml"
+                   xmlns:arm="http://armgals.org/scxml" datamodel="ecmascript">
+              <state id="A">
+                <onexit><log label="leaving" expr="_event.name"/></onexit>
+                <transition event="go" target="B">
+                  <log expr="'going'"/><arm:action name="beep"/><log label="done"/>
+                </transition>
+              </state>
+              <state id="B"/>
+            </scxml>
+            """);
+    assertThat(d.states().get(0).onExit()).containsExactly(ScAction.log("leaving", "_event.name"));
+    assertThat(d.transitions().get(0).actions())
+        .containsExactly(
+            ScAction.log(null, "'going'"), ScAction.run("beep"), ScAction.log("done", null));
+    assertThat(Scxml.read(Scxml.write(d))).isEqualTo(d);
+    Statechart chart = Statechart.of(d);
+    Activation<Configuration> a = chart.activate(chart.initialState(), chart.transitions());
+    assertThat(a.dispatch("go", null))
+        .singleElement()
+        .extracting(Step::result)
+        .isEqualTo(List.of("beep"));
+  }
+
+  @Test
+  void aLogWhoseExpressionIsBeyondTheLanguageIsRefusedWithItsLine() {
+    assertThatThrownBy(
+            () ->
+                Scxml.read(
+                    """
+                    <scxml xmlns="http://www.w3.org/2005/07/scxml" datamodel="ecmascript">
+                      <final id="A">
+                        <onentry><log label="id" expr="'session ' + _sessionid"/></onentry>
+                      </final>
+                    </scxml>
+                    """))
+        .isInstanceOf(ScxmlException.class)
+        .hasMessageContaining("<log>")
+        .hasMessageContaining("_sessionid")
+        .satisfies(e -> assertThat(((ScxmlException) e).line()).isEqualTo(3));
+    assertThatThrownBy(() -> ScAction.log("x", "Var1"))
+        .isInstanceOf(IllegalArgumentException.class)
+        .hasMessageContaining("'Var1'");
+  }
+
+  // Attribute values hold tabs and line breaks as references, which a parser keeps (a raw one
+  // would come back as a space).
+  @Test
+  void tabsAndLineBreaksInAttributesSurviveTheRoundTrip() {
+    ScDefinition d =
+        ScDefinition.of("lines", ScNode.state("A").onEntry(ScAction.log("two\nlines\tand", "1")))
+            .withTransitions(ScTransition.on("t", "A", "e", "A").when("true &&\n  true"));
+    assertThat(Scxml.read(Scxml.write(d))).isEqualTo(d);
   }
 
   @Test

@@ -21,8 +21,8 @@ import org.junit.jupiter.params.provider.ValueSource;
  * The rules of the W3C SCXML algorithm (the recommendation's appendix D), each named after the
  * assertion it checks. The charts under {@code w3c/} reproduce the cases of W3C implementation
  * report tests and SCION tests named in their file names; they were written for armgals from the
- * recommendation's text and from what those tests check, without access to the suites' files. Each
- * W3C chart ends in the top-level final state {@code pass} when the rule holds.
+ * recommendation's text and from what those tests check, and are not copies of the suites' files.
+ * Each W3C chart ends in the top-level final state {@code pass} when the rule holds.
  */
 class W3cAlgorithmTest {
 
@@ -119,6 +119,72 @@ class W3cAlgorithmTest {
   @Test
   void inWorksInTheNullDataModel_w3c436() {
     passesAtStart("test436");
+  }
+
+  // W3C 396: "the SCXML Processor MUST set _event.name to the name of the event" being processed,
+  // which is the name matched against the transitions' event descriptors.
+  @Test
+  void theEventsNameIsTheNameOfTheEventBeingProcessed_w3c396() {
+    passesAtStart("test396");
+  }
+
+  // W3C 449: conditions are converted to their effective boolean value (ECMAScript's ToBoolean):
+  // a non-empty string holds, an empty one, 0 and undefined do not.
+  @Test
+  void aConditionHoldsWhenItsValueConvertsToTrue_w3c449() {
+    passesAtStart("test449");
+  }
+
+  // W3C 413: "the SCXML Processor MUST enter the states specified by the 'initial' attribute" (and
+  // by an <initial> element), several of them in different regions of a parallel state, and the
+  // other regions by their defaults.
+  @Test
+  void theInitialStatesAreThoseTheInitialAttributeAndElementName_w3c413() {
+    passesAtStart("test413");
+    Statechart chart =
+        Statechart.of(
+            ScDefinition.of(
+                "deep",
+                ScNode.state(
+                        "top",
+                        ScNode.parallel(
+                            "p",
+                            ScNode.state("r1", ScNode.state("a1"), ScNode.state("b1")),
+                            ScNode.state("r2", ScNode.state("a2"), ScNode.state("b2")),
+                            ScNode.state("r3", ScNode.state("a3"), ScNode.state("b3"))))
+                    .withInitial("b1", "b3")));
+    assertThat(atomic(chart, chart.initialState())).containsExactly("b1", "a2", "b3");
+    assertThat(Scxml.read(Scxml.write(chart.definition()))).isEqualTo(chart.definition());
+  }
+
+  // Several initial states or targets must be able to be active together: in different regions
+  // of a parallel state, none inside another.
+  @Test
+  void statesThatCannotBeActiveTogetherAreRefusedAsInitialStatesOrTargets() {
+    ScNode regions =
+        ScNode.parallel(
+            "p",
+            ScNode.state("r1", ScNode.state("a1"), ScNode.state("b1")),
+            ScNode.state("r2", ScNode.state("a2")));
+    assertThatThrownBy(
+            () -> Statechart.of(ScDefinition.of("siblings", regions).withInitial("a1", "b1")))
+        .isInstanceOf(IllegalArgumentException.class)
+        .hasMessageContaining("'a1' and 'b1' cannot be active together");
+    assertThatThrownBy(
+            () -> Statechart.of(ScDefinition.of("nested", regions).withInitial("r1", "a1")))
+        .hasMessageContaining("'r1' and 'a1' cannot be active together");
+    assertThatThrownBy(
+            () ->
+                Statechart.of(
+                    ScDefinition.of("targets", regions, ScNode.state("Out"))
+                        .withTransitions(ScTransition.on("t", "Out", "e", "a1", "a2", "b1"))))
+        .hasMessageContaining("targets of transition 't'")
+        .hasMessageContaining("'a1' and 'b1'");
+    assertThat(
+            Statechart.of(ScDefinition.of("fine", regions).withInitial("b1", "a2"))
+                .initialState()
+                .active())
+        .containsExactly("p", "r1", "b1", "r2", "a2");
   }
 
   // W3C 355: "in the absence of an 'initial' attribute the SCXML processor MUST enter the first
