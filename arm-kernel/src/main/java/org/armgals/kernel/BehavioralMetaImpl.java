@@ -166,7 +166,8 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
    * kernel on an entity of another runtime.
    */
   private Entity base(Entity entity) {
-    if (entity instanceof RemoteEntity r && r.kernel() == kernel) {
+    if (requireNonNull(entity, "entity").handle() instanceof RemoteEntity r
+        && r.kernel() == kernel) {
       return r;
     }
     return kernel.own(entity);

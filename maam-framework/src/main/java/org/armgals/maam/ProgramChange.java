@@ -5,12 +5,13 @@ import static java.util.Objects.requireNonNull;
 import java.util.List;
 
 /**
- * A change to a robot's reactive program, requested by its meta level (paper §5.4: {@code
- * setScheduling} and {@code changeModule} method requests) and applied by the robot at its {@link
- * org.armgals.kernel.AdaptationPoint}. A request that would break the program (a cycle, an unknown
- * name) is rejected whole: the program stays as it was.
+ * A change to a robot's reactive program, as its {@link MetaRobot} applies it: what a robot's
+ * registration methods make in its constructor, and what a request of its behavioral meta ({@link
+ * RobotKind}: {@code setScheduling}, {@code changeModule}...) becomes once the robot has built its
+ * parts from its kind's catalog. A change that would break the program (a cycle, an unknown name)
+ * is rejected whole: the program stays as it was.
  */
-public sealed interface Adaptation {
+sealed interface ProgramChange {
 
   /**
    * Replaces the whole program: a new reactive program for a while (§5.1), completely rescheduled.
@@ -18,7 +19,7 @@ public sealed interface Adaptation {
    * @param schemas in schedule order
    * @param connectors joining them
    */
-  record SetScheduling(List<Schema> schemas, List<Connector> connectors) implements Adaptation {
+  record SetScheduling(List<Schema> schemas, List<Connector> connectors) implements ProgramChange {
 
     /** Copies the lists. */
     public SetScheduling {
@@ -33,7 +34,7 @@ public sealed interface Adaptation {
    *
    * @param replacement the new module
    */
-  record ChangeModule(BehaviorModule replacement) implements Adaptation {
+  record ChangeModule(BehaviorModule replacement) implements ProgramChange {
 
     /** Checks for null. */
     public ChangeModule {
@@ -46,7 +47,7 @@ public sealed interface Adaptation {
    *
    * @param schema its name not used yet
    */
-  record AddSchema(Schema schema) implements Adaptation {
+  record AddSchema(Schema schema) implements ProgramChange {
 
     /** Checks for null. */
     public AddSchema {
@@ -59,7 +60,7 @@ public sealed interface Adaptation {
    *
    * @param name the schema's name
    */
-  record RemoveSchema(String name) implements Adaptation {
+  record RemoveSchema(String name) implements ProgramChange {
 
     /** Checks for null. */
     public RemoveSchema {
@@ -72,7 +73,7 @@ public sealed interface Adaptation {
    *
    * @param connector between modules of the program
    */
-  record AddConnector(Connector connector) implements Adaptation {
+  record AddConnector(Connector connector) implements ProgramChange {
 
     /** Checks for null. */
     public AddConnector {
@@ -85,7 +86,7 @@ public sealed interface Adaptation {
    *
    * @param connector one of the program's
    */
-  record RemoveConnector(Connector connector) implements Adaptation {
+  record RemoveConnector(Connector connector) implements ProgramChange {
 
     /** Checks for null. */
     public RemoveConnector {
