@@ -96,6 +96,10 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
       held = List.copyOf(m.held);
       m.held.clear();
       publish(m);
+      if (kernel.listening()) {
+        kernel.tell(
+            new ReflectionEvent.Answered(name(), m.entity().name(), b.instant(), held.size()));
+      }
     }
     try {
       kernel

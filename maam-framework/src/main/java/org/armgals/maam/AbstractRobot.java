@@ -5,7 +5,6 @@ import static java.util.Objects.requireNonNull;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -296,6 +295,11 @@ public abstract class AbstractRobot implements Entity {
   }
 
   @Override
+  public final int queueDepth() {
+    return handle().queueDepth();
+  }
+
+  @Override
   public String toString() {
     Entity e = entity;
     return "robot " + name + (e == null ? "" : " (" + e.address() + ")");
@@ -327,12 +331,8 @@ public abstract class AbstractRobot implements Entity {
    * types. Called on the robot's thread, at the end of each cycle.
    */
   protected Map<String, Object> observe() {
-    Map<String, Object> m = new LinkedHashMap<>();
-    m.put("cycle", cycles);
-    m.put("program", changes);
-    m.put("schemas", program.schemas().stream().map(Schema::name).toList());
-    m.put("errors", errors);
-    return m;
+    return RobotKind.baseObservation(
+        cycles, changes, program.schemas().stream().map(Schema::name).toList(), errors);
   }
 
   /** {@link #observe()} as a state of the robot's {@link RobotKind}. */

@@ -212,6 +212,11 @@ public abstract class BMetaRobot implements BehavioralMeta, MetaPolicy {
   }
 
   @Override
+  public final int queueDepth() {
+    return meta().queueDepth();
+  }
+
+  @Override
   public String toString() {
     BehavioralMeta m = entity;
     return "meta " + name + (m == null ? "" : " (" + m.address() + ")");

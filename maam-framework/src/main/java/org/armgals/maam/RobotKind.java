@@ -155,6 +155,20 @@ public final class RobotKind {
       return this;
     }
 
+    /**
+     * What its robots observe: what every robot does ({@code cycle}, {@code program}, {@code
+     * schemas}, {@code errors}) and the fields of {@code own}, with their values before the first
+     * cycle (their types are the fields' types). For a kind defined where no robot is, in a meta's
+     * JVM.
+     */
+    public Builder<R> observing(Map<String, Object> own) {
+      requireNonNull(own, "own");
+      Map<String, Object> all = baseObservation(0, 0, List.of(), 0);
+      all.putAll(own);
+      this.initial = new PState(all);
+      return this;
+    }
+
     /** Adds the schema {@code schemaName} to the catalog, built by {@code factory}. */
     public Builder<R> schema(String schemaName, Factory<R, Schema> factory) {
       return add(new CatalogEntry<>(CatalogEntry.Part.SCHEMA, schemaName, robots, factory));
@@ -341,12 +355,30 @@ public final class RobotKind {
       text.append(" = ").append(m.get(VALUE));
     }
     if (m.get(PARAMETERS) instanceof Map<?, ?> p && !p.isEmpty()) {
-      text.append(' ').append(p);
+      StringBuilder values = new StringBuilder();
+      p.forEach(
+          (k, v) ->
+              values.append(values.isEmpty() ? "" : ", ").append(k).append('=').append(brief(v)));
+      text.append(" {").append(values).append('}');
     }
     if (m.get(SCHEMAS) != null) {
       text.append(' ').append(m.get(SCHEMAS)).append(' ').append(m.get(CONNECTORS));
     }
     return text.toString();
+  }
+
+  /** A number in at most four significant digits ({@code 0.30000000000000004} reads 0.3). */
+  private static Object brief(Object value) {
+    if (value instanceof Double || value instanceof Float) {
+      double d = ((Number) value).doubleValue();
+      if (Double.isFinite(d)) {
+        return new java.math.BigDecimal(d)
+            .round(new java.math.MathContext(4))
+            .stripTrailingZeros()
+            .toPlainString();
+      }
+    }
+    return value;
   }
 
   private static Adaptation part(String behavior, String name, Map<String, ?> parameters) {
@@ -387,6 +419,17 @@ public final class RobotKind {
     }
     throw new IllegalArgumentException(
         request + " is not a robot's program request; expected one made by RobotKind");
+  }
+
+  /** What every robot observes of itself: see {@link AbstractRobot#observe()}. */
+  static Map<String, Object> baseObservation(
+      long cycle, long program, List<String> schemas, long errors) {
+    Map<String, Object> m = new LinkedHashMap<>();
+    m.put("cycle", cycle);
+    m.put("program", program);
+    m.put("schemas", List.copyOf(schemas));
+    m.put("errors", errors);
+    return m;
   }
 
   static String checkName(String name, String what) {
