@@ -169,7 +169,7 @@ public abstract class AbstractRobot implements Entity {
   }
 
   /** A registration: by hand, before the robot runs as an entity. */
-  private void register(ProgramChange change) {
+  private void register(ProgramChange.Change change) {
     Entity e = entity;
     if (e != null) {
       throw new IllegalStateException(
@@ -398,7 +398,7 @@ public abstract class AbstractRobot implements Entity {
           "robot " + name + ": a cycle is its clock's to run, not a request's");
     }
     Map<String, Object> in = RobotKind.input(request);
-    ProgramChange change =
+    ProgramChange.Change change =
         switch (request.behavior()) {
           case RobotKind.SET_SCHEDULING -> setSchedulingOf(in);
           case RobotKind.CHANGE_MODULE ->
@@ -458,7 +458,7 @@ public abstract class AbstractRobot implements Entity {
     forgotten.clear();
   }
 
-  private ProgramChange setSchedulingOf(Map<String, Object> in) {
+  private ProgramChange.Change setSchedulingOf(Map<String, Object> in) {
     List<Schema> schemas = new ArrayList<>();
     for (Object schema : list(in, RobotKind.SCHEMAS)) {
       schemas.add(
@@ -540,7 +540,7 @@ public abstract class AbstractRobot implements Entity {
    *
    * @throws IllegalArgumentException the program refuses it; nothing changed
    */
-  private void applyChange(ProgramChange change) {
+  private void applyChange(ProgramChange.Change change) {
     long before = program.version();
     program.apply(change);
     if (change instanceof ProgramChange.ChangeModule c && plan != null && planVersion == before) {

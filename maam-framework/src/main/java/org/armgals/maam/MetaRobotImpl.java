@@ -46,7 +46,7 @@ final class MetaRobotImpl implements MetaRobot {
    *     or other ports, a connector the scheduler refuses, or an input fed twice
    * @throws CycleException the program would have a cycle
    */
-  void apply(ProgramChange adaptation) {
+  void apply(ProgramChange.Change adaptation) {
     requireNonNull(adaptation, "adaptation");
     List<Schema> newSchemas = new ArrayList<>(schemas);
     List<Connector> newConnectors = new ArrayList<>(connectors);

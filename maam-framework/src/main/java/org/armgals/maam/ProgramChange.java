@@ -11,7 +11,13 @@ import java.util.List;
  * parts from its kind's catalog. A change that would break the program (a cycle, an unknown name)
  * is rejected whole: the program stays as it was.
  */
-sealed interface ProgramChange {
+final class ProgramChange {
+
+  private ProgramChange() {}
+
+  /** One change. */
+  sealed interface Change
+      permits SetScheduling, ChangeModule, AddSchema, RemoveSchema, AddConnector, RemoveConnector {}
 
   /**
    * Replaces the whole program: a new reactive program for a while (§5.1), completely rescheduled.
@@ -19,10 +25,10 @@ sealed interface ProgramChange {
    * @param schemas in schedule order
    * @param connectors joining them
    */
-  record SetScheduling(List<Schema> schemas, List<Connector> connectors) implements ProgramChange {
+  record SetScheduling(List<Schema> schemas, List<Connector> connectors) implements Change {
 
     /** Copies the lists. */
-    public SetScheduling {
+    SetScheduling {
       schemas = List.copyOf(schemas);
       connectors = List.copyOf(connectors);
     }
@@ -34,10 +40,10 @@ sealed interface ProgramChange {
    *
    * @param replacement the new module
    */
-  record ChangeModule(BehaviorModule replacement) implements ProgramChange {
+  record ChangeModule(BehaviorModule replacement) implements Change {
 
     /** Checks for null. */
-    public ChangeModule {
+    ChangeModule {
       requireNonNull(replacement, "replacement");
     }
   }
@@ -47,10 +53,10 @@ sealed interface ProgramChange {
    *
    * @param schema its name not used yet
    */
-  record AddSchema(Schema schema) implements ProgramChange {
+  record AddSchema(Schema schema) implements Change {
 
     /** Checks for null. */
-    public AddSchema {
+    AddSchema {
       requireNonNull(schema, "schema");
     }
   }
@@ -60,10 +66,10 @@ sealed interface ProgramChange {
    *
    * @param name the schema's name
    */
-  record RemoveSchema(String name) implements ProgramChange {
+  record RemoveSchema(String name) implements Change {
 
     /** Checks for null. */
-    public RemoveSchema {
+    RemoveSchema {
       requireNonNull(name, "name");
     }
   }
@@ -73,10 +79,10 @@ sealed interface ProgramChange {
    *
    * @param connector between modules of the program
    */
-  record AddConnector(Connector connector) implements ProgramChange {
+  record AddConnector(Connector connector) implements Change {
 
     /** Checks for null. */
-    public AddConnector {
+    AddConnector {
       requireNonNull(connector, "connector");
     }
   }
@@ -86,10 +92,10 @@ sealed interface ProgramChange {
    *
    * @param connector one of the program's
    */
-  record RemoveConnector(Connector connector) implements ProgramChange {
+  record RemoveConnector(Connector connector) implements Change {
 
     /** Checks for null. */
-    public RemoveConnector {
+    RemoveConnector {
       requireNonNull(connector, "connector");
     }
   }

@@ -95,16 +95,17 @@ public final class MetaMain {
         Kernel.allowKernelEvents(JmsTransport.builder().broker(url).prefix(prefix)).build()) {
       ActiveRuntime runtime =
           ActiveRuntime.builder().name(name).workers(2).jmx(false).transport(transport).build();
-      try (Kernel kernel =
-              org.armgals.kernel.StructuralMeta.bootstrap(
-                  runtime, KernelOptions.defaults().withJmx(true).withListener(recorder));
-          Presence presence =
-              Presence.builder()
-                  .broker(url)
-                  .prefix(prefix)
-                  .runtime(name)
-                  .listener(kernel.presenceListener())
-                  .build()) {
+      Kernel kernel =
+          org.armgals.kernel.StructuralMeta.bootstrap(
+              runtime, KernelOptions.defaults().withJmx(true).withListener(recorder));
+      Presence presence =
+          Presence.builder()
+              .broker(url)
+              .prefix(prefix)
+              .runtime(name)
+              .listener(kernel.presenceListener())
+              .build();
+      try {
         Map<String, StructuralMeta<PState>> kinds = level.kinds(kernel);
         Map<String, String> metaOf = new LinkedHashMap<>();
         List<MetaLevel.Watch> watches =
@@ -132,6 +133,8 @@ public final class MetaMain {
         writeFigures(out.resolve(Reflection.META_FIGURES), level.figures());
         System.out.println("meta level of " + example + " leaves");
       } finally {
+        presence.close();
+        kernel.close();
         runtime.shutdown(ShutdownMode.CANCEL, Duration.ofSeconds(5));
       }
     }

@@ -330,19 +330,27 @@ public final class Reflection implements AutoCloseable {
    */
   public void step(Island island) {
     island.step();
+    // The requests one robot applied in this cycle for one reason are one adaptation of it.
+    Map<String, List<String>> whats = new LinkedHashMap<>();
     for (ReflectionEvent.Applied a : recorder.drainApplied()) {
       Integer atom = atoms.get(a.entity());
       if (atom == null) {
         continue;
       }
       String what = RobotKind.describe(a.request().adaptation());
-      String why = RobotKind.reason(a.request().adaptation()).orElse("asked by the meta level");
-      if (a.applied()) {
-        journal.adaptation(atom, what, why);
-      } else {
+      if (!a.applied()) {
         journal.note(atom, "refused " + what + ": " + a.refusal());
+        continue;
       }
+      String why = RobotKind.reason(a.request().adaptation()).orElse("asked by the meta level");
+      whats.computeIfAbsent(a.entity() + "\n" + why, k -> new ArrayList<>()).add(what);
     }
+    whats.forEach(
+        (key, what) -> {
+          String robot = key.substring(0, key.indexOf('\n'));
+          String why = key.substring(key.indexOf('\n') + 1);
+          journal.adaptation(atoms.get(robot), String.join("; ", what), why);
+        });
   }
 
   /** A meta's note, recorded on the loop's time line. */
