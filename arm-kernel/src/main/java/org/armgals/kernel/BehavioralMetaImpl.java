@@ -96,6 +96,10 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
       held = List.copyOf(m.held);
       m.held.clear();
       publish(m);
+      if (kernel.listening()) {
+        kernel.tell(
+            new ReflectionEvent.Answered(name(), m.entity().name(), b.instant(), held.size()));
+      }
     }
     try {
       kernel
@@ -166,7 +170,8 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
    * kernel on an entity of another runtime.
    */
   private Entity base(Entity entity) {
-    if (entity instanceof RemoteEntity r && r.kernel() == kernel) {
+    if (requireNonNull(entity, "entity").handle() instanceof RemoteEntity r
+        && r.kernel() == kernel) {
       return r;
     }
     return kernel.own(entity);

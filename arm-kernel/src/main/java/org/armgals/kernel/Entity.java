@@ -69,4 +69,22 @@ public interface Entity {
 
   /** Whether its object has been stopped. */
   boolean isStopped();
+
+  /**
+   * How many events wait in its buffer now (a reactive entity takes them at its next release); -1
+   * for a handle on an entity of another runtime, whose buffer this runtime cannot see.
+   */
+  int queueDepth();
+
+  /**
+   * The kernel's own handle on this entity: itself, unless this object stands for an entity the
+   * kernel made and forwards to it (a robot is the kernel entity whose program it is; a robot's
+   * behavioral meta is the kernel meta-entity whose policy it is), in which case it answers that
+   * entity. The kernel takes every entity given to it through this handle.
+   *
+   * @throws IllegalStateException the object stands for no entity yet (a robot not started)
+   */
+  default Entity handle() {
+    return this;
+  }
 }

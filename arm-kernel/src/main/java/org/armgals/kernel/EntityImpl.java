@@ -145,6 +145,11 @@ abstract sealed class EntityImpl<E extends State> implements Entity
   }
 
   @Override
+  public final int queueDepth() {
+    return object().queueDepth();
+  }
+
+  @Override
   public String toString() {
     return name + "@" + address();
   }

@@ -40,4 +40,7 @@ public interface EntityMXBean {
 
   /** How many times it stopped waiting for a meta in lock step (it runs free since). */
   long getLockStepTimeouts();
+
+  /** The events waiting in its buffer. */
+  int getQueueDepth();
 }

@@ -121,6 +121,11 @@ final class Jmx {
     public long getLockStepTimeouts() {
       return e.servant.lockStepTimeouts();
     }
+
+    @Override
+    public int getQueueDepth() {
+      return e.queueDepth();
+    }
   }
 
   record MetaBean(BehavioralMetaImpl m) implements BehavioralMetaMXBean {

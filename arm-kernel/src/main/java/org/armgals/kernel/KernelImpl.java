@@ -218,7 +218,7 @@ final class KernelImpl implements Kernel {
   /** {@code entity} as an entity of this kernel, or an exception saying what it is. */
   EntityImpl<?> own(Entity entity) {
     requireNonNull(entity, "entity");
-    if (entity instanceof EntityImpl<?> e && e.kernel == this) {
+    if (entity.handle() instanceof EntityImpl<?> e && e.kernel == this) {
       return e;
     }
     throw new IllegalArgumentException(

@@ -106,6 +106,20 @@ public sealed interface ReflectionEvent {
   }
 
   /**
+   * Meta side, in lock step: {@code meta} has handled every notification of {@code entity}'s
+   * instant {@code instant} and answered its barrier with {@code released} requests, for the
+   * entity's adaptation point {@code k} instants later.
+   */
+  record Answered(String meta, String entity, long instant, int released)
+      implements ReflectionEvent {
+    /** Checks the components. */
+    public Answered {
+      requireNonNull(meta, "meta");
+      requireNonNull(entity, "entity");
+    }
+  }
+
+  /**
    * Base side: at its adaptation point of instant {@code instant}, {@code entity} applied {@code
    * request} ({@code refusal} null) or refused it ({@code refusal} says why). {@code nanos} is the
    * time it took, by the kernel's stopwatch ({@link KernelOptions#stopwatch()}); {@code overrun}

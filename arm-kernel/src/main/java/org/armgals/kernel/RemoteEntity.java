@@ -127,6 +127,11 @@ final class RemoteEntity implements Entity {
     return false;
   }
 
+  @Override
+  public int queueDepth() {
+    return -1;
+  }
+
   private static @Nullable Address self() {
     return ActiveContext.current().map(o -> o.address()).orElse(null);
   }

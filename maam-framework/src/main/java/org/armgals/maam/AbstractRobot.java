@@ -4,80 +4,86 @@ import static java.util.Objects.requireNonNull;
 
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.LinkedHashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.Set;
+import org.armgals.active.Address;
+import org.armgals.active.FutureValue;
 import org.armgals.active.TimeSource;
-import org.armgals.gals.CycleContext;
 import org.armgals.gals.Island;
-import org.armgals.gals.ReactiveEntity;
-import org.armgals.kernel.AdaptationPoint;
+import org.armgals.kernel.Adaptation;
 import org.armgals.kernel.BehavioralMeta;
 import org.armgals.kernel.Entity;
 import org.armgals.kernel.EntityOptions;
+import org.armgals.kernel.NotificationPolicy;
 import org.armgals.kernel.Stimulus;
 import org.armgals.kernel.StructuralMeta;
 import org.armgals.kernel.spi.InstantContext;
 import org.armgals.maam.spi.Body;
 import org.armgals.maam.spi.RobotErrorHandler;
+import org.armgals.representation.Behavior;
+import org.armgals.representation.Behaviors;
+import org.armgals.representation.State;
 import org.armgals.representation.p.PState;
 import org.jspecify.annotations.Nullable;
 
 /**
- * A robot (paper §5.4, step 4: the programmer's {@code Robot} extends this class and registers its
- * schemas, modules and connectors in its constructor). Each {@link #cycle} runs every behavior
- * module once in the order of the schedule its {@link MetaRobot} computed, then tells the body the
- * cycle ended, notifies the {@link BMetaRobot} if there is one, and applies the requested
- * adaptations at its {@link AdaptationPoint}.
+ * A robot (paper §5.4, figure 8): the programmer's {@code Robot} extends this class and registers
+ * its schemas, modules and connectors in its constructor (step 4 of the paper's list). Each {@link
+ * #cycle} runs every behavior module once, in the order of the schedule its {@link MetaRobot}
+ * computed, then tells the body the cycle ended.
  *
- * <p>A cycle is a method: tests and simulators call {@link #cycle} by hand; {@link #start} makes
- * the robot a reactive entity of an arm-gals {@link Island} (paper §5.3), which runs one cycle per
- * release. On an island the island rules the cycle: its {@link Island#adaptationPoint() adaptation
- * point} replaces the robot's own, requested adaptations are applied by the island between two
- * instants (traced, and timed against its period in its {@link org.armgals.gals.IslandStats}), each
- * cycle adds a line with its emissions to the island's trace, and the robot talks to entities of
- * its own or other islands through {@link #received} and {@link #emit}.
+ * <p><b>A robot is a kernel entity.</b> {@link #start} makes it an entity of the ARM kernel in the
+ * synchronous mode, released by an arm-gals {@link Island} (its kind: a {@link RobotKind}): its
+ * cycle is the entity's program, each cycle ends with the kind's {@value RobotKind#CYCLE} behavior
+ * applied with what the robot {@link #observe() observes} of itself, and its behavioral meta-entity
+ * (a {@link BMetaRobot}, or any kernel {@link BehavioralMeta}) is notified of it as the entity's
+ * {@link NotificationPolicy} says, on its own object, never on the robot's thread: in the same JVM
+ * or in another one, over the broker. The meta's requests ({@link RobotKind}) are versioned,
+ * damped, applied at the island's adaptation point and acknowledged, applied or refused; in lock
+ * step ({@link EntityOptions#withLockStep}) the request decided on cycle {@code n} is applied at
+ * the adaptation point of cycle {@code n + k}, so that runs on virtual time are reproducible. From
+ * then on the robot is the entity: it implements {@link Entity} by forwarding to it.
  *
- * <p>Threading: one thread at a time runs {@link #cycle} (on an island, the release gives the
- * happens-before between two cycles and the adaptations between them). The registration methods
- * ({@link #addSchema} and the others) are for the constructor, for the thread stepping the robot
- * between cycles, or for the robot's own modules; any other thread asks through {@link #request},
- * which is thread-safe.
+ * <p>Stepped by hand ({@link #cycle}, for tests and simulations of modules), a robot has no meta
+ * level; its program changes only through the registration methods, between cycles.
+ *
+ * <p>Threading: one thread at a time runs {@link #cycle} (as an entity, its object: the releases
+ * give the happens-before between two cycles and the adaptations between them). The registration
+ * methods are for the constructor, or for the thread stepping the robot by hand between cycles; the
+ * {@link Entity} methods for any thread once it is started.
  */
-public abstract class AbstractRobot {
+public abstract class AbstractRobot implements Entity {
 
   private final String name;
   private final Body body;
   private final TimeSource time;
-  private final MetaRobot meta;
-  private final ConcurrentLinkedQueue<Adaptation> requests = new ConcurrentLinkedQueue<>();
+  private final MetaRobotImpl program;
   private final Map<Connector, ConnectorState> connectorStates = new HashMap<>();
-  private final List<Adaptation> applied = new ArrayList<>();
-  private final List<CycleReport.Rejected> rejected = new ArrayList<>();
-  private final List<String> failedModules = new ArrayList<>();
   private final Plan.Failures failures = this::moduleFailed;
   private final Object hosting = new Object();
+  private final List<String> forgotten = new ArrayList<>();
 
-  private AdaptationPoint adaptationPoint = AdaptationPoint.END_OF_CYCLE;
-  private @Nullable BMetaRobot behavioralMeta;
   private RobotErrorHandler errorHandler = RobotErrorHandler.logging();
   private @Nullable Plan plan;
-  private volatile @Nullable ReactiveEntity<AbstractRobot> entity;
-  private @Nullable CycleContext<AbstractRobot> context;
-  private volatile @Nullable Entity kernelEntity;
+  private long planVersion = -1;
+  private volatile @Nullable Entity entity;
+  private volatile Behaviors<?> catalog = EMPTY;
   private @Nullable InstantContext instant;
   private volatile @Nullable Thread cycling;
-  private long planVersion = -1;
   private long cycles;
   private long errors;
-  private long rejections;
+  private long changes;
+
+  private static final Behaviors<?> EMPTY =
+      org.armgals.representation.p.PSpace.of(new PState(Map.of())).methods();
 
   /**
    * A robot with an empty program, scheduled by {@link Scheduler#topological()}.
    *
-   * @param name not blank
+   * @param name not blank; its kernel entity's name
    * @param body what it senses and drives
    * @param time where it reads the time of each cycle (its clock, when it runs on one)
    */
@@ -85,7 +91,7 @@ public abstract class AbstractRobot {
     this(name, body, time, MetaRobot.create(Scheduler.topological()));
   }
 
-  /** A robot whose program is held by {@code meta}. */
+  /** A robot whose program is held by {@code meta}, made by {@link MetaRobot#create}. */
   protected AbstractRobot(String name, Body body, TimeSource time, MetaRobot meta) {
     requireNonNull(name, "name");
     if (name.isBlank()) {
@@ -94,10 +100,11 @@ public abstract class AbstractRobot {
     this.name = name;
     this.body = requireNonNull(body, "body");
     this.time = requireNonNull(time, "time");
-    this.meta = requireNonNull(meta, "meta");
+    this.program = (MetaRobotImpl) requireNonNull(meta, "meta");
   }
 
-  /** Its name. */
+  /** Its name, which is its kernel entity's. */
+  @Override
   public final String name() {
     return name;
   }
@@ -107,24 +114,24 @@ public abstract class AbstractRobot {
     return body;
   }
 
-  /** Its scheduling meta level. */
+  /** Its scheduling meta level, which holds its program. */
   public final MetaRobot metaRobot() {
-    return meta;
+    return program;
   }
 
   /** The order its modules run in. */
   public final Schedule schedule() {
-    return meta.schedule();
+    return program.schedule();
   }
 
-  /** Adds {@code schema} after the others and reschedules. See {@link Adaptation.AddSchema}. */
+  /** Adds {@code schema} after the others and reschedules. */
   public final void addSchema(Schema schema) {
-    meta.apply(new Adaptation.AddSchema(schema));
+    register(new ProgramChange.AddSchema(schema));
   }
 
-  /** Removes a schema and its connectors and reschedules. See {@link Adaptation.RemoveSchema}. */
+  /** Removes a schema and its connectors and reschedules. */
   public final void removeSchema(String schemaName) {
-    meta.apply(new Adaptation.RemoveSchema(schemaName));
+    register(new ProgramChange.RemoveSchema(schemaName));
   }
 
   /**
@@ -136,69 +143,24 @@ public abstract class AbstractRobot {
     addSchema(Schema.builder(module.name()).add(module).build());
   }
 
-  /** Adds a connector and reschedules. See {@link Adaptation.AddConnector}. */
+  /** Adds a connector and reschedules. */
   public final void addConnector(Connector connector) {
-    meta.apply(new Adaptation.AddConnector(connector));
+    register(new ProgramChange.AddConnector(connector));
   }
 
-  /** Removes a connector and reschedules. See {@link Adaptation.RemoveConnector}. */
+  /** Removes a connector and reschedules. */
   public final void removeConnector(Connector connector) {
-    meta.apply(new Adaptation.RemoveConnector(connector));
+    register(new ProgramChange.RemoveConnector(connector));
   }
 
-  /** Replaces the whole program. See {@link Adaptation.SetScheduling}. */
+  /** Replaces the whole program. */
   public final void setScheduling(List<Schema> schemas, List<Connector> connectors) {
-    meta.apply(new Adaptation.SetScheduling(schemas, connectors));
+    register(new ProgramChange.SetScheduling(schemas, connectors));
   }
 
-  /**
-   * Replaces one module by another of the same name and shape. See {@link Adaptation.ChangeModule}.
-   */
+  /** Replaces one module by another of the same name and shape. */
   public final void changeModule(BehaviorModule replacement) {
-    meta.apply(new Adaptation.ChangeModule(replacement));
-  }
-
-  /**
-   * Where in the cycle requested adaptations are applied: {@link AdaptationPoint#END_OF_CYCLE} by
-   * default; on an island, the island's.
-   */
-  public final AdaptationPoint adaptationPoint() {
-    ReactiveEntity<AbstractRobot> e = entity;
-    return e == null ? adaptationPoint : e.island().adaptationPoint();
-  }
-
-  /**
-   * Sets where in the cycle requested adaptations are applied when the robot is stepped by hand.
-   *
-   * @param point {@link AdaptationPoint#BEGIN_OF_CYCLE} or {@link AdaptationPoint#END_OF_CYCLE}: a
-   *     robot adapts only between cycles
-   * @throws IllegalArgumentException {@link AdaptationPoint#ON_ARRIVAL}
-   * @throws IllegalStateException the robot runs on an island, whose point rules
-   */
-  protected final void setAdaptationPoint(AdaptationPoint point) {
-    requireNonNull(point, "point");
-    if (point == AdaptationPoint.ON_ARRIVAL) {
-      throw new IllegalArgumentException(
-          "adaptation point of robot "
-              + name
-              + " must be BEGIN_OF_CYCLE or END_OF_CYCLE, was "
-              + point);
-    }
-    ReactiveEntity<AbstractRobot> e = entity;
-    if (e != null) {
-      throw new IllegalStateException(
-          "robot "
-              + name
-              + " runs on island "
-              + e.island().name()
-              + ", whose adaptation point rules");
-    }
-    this.adaptationPoint = point;
-  }
-
-  /** Sets the behavioral meta notified at the end of each cycle. */
-  protected final void setBehavioralMeta(BMetaRobot behavioralMeta) {
-    this.behavioralMeta = requireNonNull(behavioralMeta, "behavioralMeta");
+    register(new ProgramChange.ChangeModule(replacement));
   }
 
   /** Sets where failures go; {@link RobotErrorHandler#logging()} by default. */
@@ -206,104 +168,171 @@ public abstract class AbstractRobot {
     this.errorHandler = requireNonNull(errorHandler, "errorHandler");
   }
 
-  /**
-   * Asks for {@code adaptation}, applied at the next {@link AdaptationPoint}: at the beginning of
-   * the next cycle, or at the end of the current or next one. Any thread; requests are applied in
-   * the order they were made. On an island it is an adaptation request of the robot's entity
-   * ({@link ReactiveEntity#adapt}); requests made before {@link #start} go to the island then.
-   */
-  public final void request(Adaptation adaptation) {
-    requireNonNull(adaptation, "adaptation");
-    synchronized (hosting) {
-      ReactiveEntity<AbstractRobot> e = entity;
-      if (e == null) {
-        requests.add(adaptation);
-      } else {
-        IslandHost.request(e, adaptation);
-      }
-    }
-  }
-
-  /**
-   * One cycle, by hand: adaptations if at the beginning, every module in schedule order, {@link
-   * Body#endCycle}, the behavioral meta's notification, adaptations if at the end.
-   *
-   * @throws IllegalStateException the robot runs on an island, which releases its cycles
-   */
-  public final void cycle() {
-    ReactiveEntity<AbstractRobot> e = entity;
+  /** A registration: by hand, before the robot runs as an entity. */
+  private void register(ProgramChange.Change change) {
+    Entity e = entity;
     if (e != null) {
       throw new IllegalStateException(
-          "robot " + name + " runs on island " + e.island().name() + ", which releases its cycles");
+          "robot "
+              + name
+              + " runs as a kernel entity: its program changes by its meta's requests (RobotKind),"
+              + " at its adaptation point");
     }
-    Entity k = kernelEntity;
-    if (k != null) {
+    applyChange(change);
+  }
+
+  /**
+   * One cycle, by hand: every module in schedule order, then {@link Body#endCycle}.
+   *
+   * @throws IllegalStateException the robot runs as a kernel entity, whose clock releases its
+   *     cycles
+   */
+  public final void cycle() {
+    Entity e = entity;
+    if (e != null) {
       throw new IllegalStateException(
-          "robot " + name + " is the kernel entity " + k + ", whose clock releases its cycles");
-    }
-    if (adaptationPoint == AdaptationPoint.BEGIN_OF_CYCLE) {
-      adapt();
+          "robot " + name + " is the kernel entity " + e + ", whose clock releases its cycles");
     }
     react();
-    if (adaptationPoint == AdaptationPoint.END_OF_CYCLE) {
-      adapt();
-    }
   }
 
   /**
-   * One cycle released by the robot's island: the reaction of its entity. The island applies the
-   * adaptations; the cycle's emissions (and the adaptations it saw rejected) go to its trace.
+   * Makes this robot a kernel entity of {@code kind} in the synchronous mode on {@code island}
+   * (paper figure 8), notifying {@code meta}: from the island's next release, one cycle per
+   * release, then the kind's {@value RobotKind#CYCLE} behavior applied with {@link #observe()}. The
+   * entity takes the robot's name.
+   *
+   * @param kind a kind made by {@link RobotKind} for this robot's class and observation
+   * @param meta its behavioral meta: a {@link BMetaRobot}, any behavioral meta of the kind's kernel
+   *     ({@code kernel.basicBehavioralMeta()} for none of its own); one in another runtime takes it
+   *     later with {@link BehavioralMeta#addBaseLevelEntity}
+   * @param options the notification policy and the lock step (from {@link Island#entityOptions()});
+   *     the island sets the rest
+   * @throws IllegalStateException the robot already runs
+   * @throws IllegalArgumentException the kernel has an entity of the robot's name
    */
-  final void islandCycle(CycleContext<AbstractRobot> cycle) {
-    context = cycle;
-    try {
-      boolean tracing = cycle.tracing();
-      if (tracing) {
-        for (CycleReport.Rejected r : rejected) {
-          cycle.trace("rejected " + IslandHost.describe(r.adaptation()) + ": " + r.reason());
-        }
+  public final void start(
+      Island island, StructuralMeta<PState> kind, BehavioralMeta meta, EntityOptions options) {
+    requireNonNull(island, "island");
+    requireNonNull(kind, "kind");
+    requireNonNull(meta, "meta");
+    requireNonNull(options, "options");
+    synchronized (hosting) {
+      if (entity != null) {
+        throw new IllegalStateException("robot " + name + " already runs");
       }
-      Plan current = react();
-      if (tracing) {
-        cycle.trace("cycle " + cycles + " " + current.emissions());
-      }
-    } finally {
-      context = null;
+      catalog = kind.behaviors();
+      entity = island.spawn(kind, name, meta, options.withProgram(new KernelHost(this)));
     }
   }
 
   /**
-   * The payloads the robot's entity took at this release, ordered as {@link CycleContext#inputs()};
-   * empty when the robot is stepped by hand. For its modules, during a cycle.
+   * The kernel entity this robot is, once started.
+   *
+   * @throws IllegalStateException not started
+   */
+  @Override
+  public final Entity handle() {
+    Entity e = entity;
+    if (e == null) {
+      throw new IllegalStateException(
+          "robot "
+              + name
+              + " is not started: make it a kernel entity with start(island, kind, meta, options)");
+    }
+    return e;
+  }
+
+  /** Whether it runs as a kernel entity. */
+  public final boolean started() {
+    return entity != null;
+  }
+
+  @Override
+  public final Address address() {
+    return handle().address();
+  }
+
+  @Override
+  public final StructuralMeta<?> structuralMeta() {
+    return handle().structuralMeta();
+  }
+
+  @Override
+  public final Optional<BehavioralMeta> behavioralMeta() {
+    return handle().behavioralMeta();
+  }
+
+  @Override
+  public final State state() {
+    return handle().state();
+  }
+
+  @Override
+  public final NotificationPolicy notificationPolicy() {
+    return handle().notificationPolicy();
+  }
+
+  @Override
+  public final long appliedVersion() {
+    return handle().appliedVersion();
+  }
+
+  @Override
+  public final void send(String trigger, @Nullable Object input) {
+    handle().send(trigger, input);
+  }
+
+  @Override
+  public final FutureValue<@Nullable Object> call(String behavior, @Nullable Object input) {
+    return handle().call(behavior, input);
+  }
+
+  @Override
+  public final boolean isStopped() {
+    Entity e = entity;
+    return e != null && e.isStopped();
+  }
+
+  @Override
+  public final int queueDepth() {
+    return handle().queueDepth();
+  }
+
+  @Override
+  public String toString() {
+    Entity e = entity;
+    return "robot " + name + (e == null ? "" : " (" + e.address() + ")");
+  }
+
+  /**
+   * The inputs of the stimuli its entity took at this release ({@link Entity#send}), in the
+   * instant's order; empty when the robot is stepped by hand. For its modules, during a cycle.
    */
   public final List<Object> received() {
     InstantContext i = instant;
-    if (i != null) {
-      List<Object> inputs = new ArrayList<>();
-      for (Stimulus s : i.stimuli()) {
-        inputs.add(s.input());
-      }
-      return inputs;
+    if (i == null) {
+      return List.of();
     }
-    CycleContext<AbstractRobot> c = context;
-    return c == null ? List.of() : c.inputs();
+    List<Object> inputs = new ArrayList<>();
+    for (Stimulus s : i.stimuli()) {
+      inputs.add(s.input());
+    }
+    return inputs;
   }
 
   /**
    * What the robot shows of itself each cycle (paper §3.2: its state, as the procedural
-   * representation reifies it), in the values a notification can carry (strings, booleans, boxed
+   * representation reifies it), in values a notification can carry (strings, booleans, boxed
    * numbers, lists of those): {@code cycle} (the cycles run), {@code program} (the version of its
-   * program: it moves at each adaptation applied) and {@code errors}. A robot adds its readings,
-   * the outputs of its modules, its energy: override, call this one, and add to its map. Each cycle
-   * must give the same names with values of the same types. Called on the robot's thread, at the
-   * end of each cycle.
+   * program: it moves at each change applied), {@code schemas} (their names, in schedule order) and
+   * {@code errors}. A robot adds its readings, the outputs of its modules, its energy: override,
+   * call this one, and add to its map. Each cycle must give the same names with values of the same
+   * types. Called on the robot's thread, at the end of each cycle.
    */
   protected Map<String, Object> observe() {
-    Map<String, Object> m = new LinkedHashMap<>();
-    m.put("cycle", cycles);
-    m.put("program", meta.version());
-    m.put("errors", errors);
-    return m;
+    return RobotKind.baseObservation(
+        cycles, changes, program.schemas().stream().map(Schema::name).toList(), errors);
   }
 
   /** {@link #observe()} as a state of the robot's {@link RobotKind}. */
@@ -312,43 +341,29 @@ public abstract class AbstractRobot {
   }
 
   /**
-   * Makes this robot a kernel entity of {@code kind} in the synchronous mode on {@code island}
-   * (paper figure 8): its cycle is the entity's program, run at each of the island's releases; each
-   * cycle ends with the kind's {@link RobotKind#CYCLE} behavior applied with {@link #observe()}, so
-   * {@code meta} is notified of it as {@code options}' notification policy says, on its own object,
-   * never on the robot's thread; the kernel's adaptation requests for the robot ({@link
-   * RobotKind#request}) are applied to its program at the island's adaptation point and
-   * acknowledged, applied or refused. In lock step ({@link EntityOptions#withLockStep}, with the
-   * island on a manual clock), the request decided on the notifications of cycle {@code n} is
-   * applied at the adaptation point of cycle {@code n + k}.
-   *
-   * @param kind a kind made by {@link RobotKind#define} for this robot's observation
-   * @param options the notification policy and the lock step; the island sets the rest
-   * @return the robot's entity
-   * @throws IllegalStateException the robot already runs
+   * The signals emitted in the last cycle, after suppression, in slot order; for {@link
+   * #observe()}.
    */
-  public final Entity start(
-      Island island, StructuralMeta<PState> kind, BehavioralMeta meta, EntityOptions options) {
-    requireNonNull(island, "island");
-    requireNonNull(kind, "kind");
-    requireNonNull(meta, "meta");
-    requireNonNull(options, "options");
-    synchronized (hosting) {
-      if (entity != null || kernelEntity != null) {
-        throw new IllegalStateException("robot " + name + " already runs");
-      }
-      Entity e = island.spawn(kind, name, meta, options.withProgram(new KernelHost(this)));
-      kernelEntity = e;
-      return e;
-    }
+  protected final List<Emission> emissions() {
+    Plan current = plan;
+    return current == null ? List.of() : current.emissions();
   }
 
   /**
-   * The kernel entity the robot is, once {@linkplain #start(Island, StructuralMeta, BehavioralMeta,
-   * EntityOptions) started} as one.
+   * Called after {@code request}, from the robot's meta, was applied to its program: on the robot's
+   * thread, at its adaptation point, so whatever it records is in step with the cycles. Does
+   * nothing by default.
    */
-  public final Optional<Entity> kernelEntity() {
-    return Optional.ofNullable(kernelEntity);
+  protected void adapted(Adaptation.ApplyBehavior request) {}
+
+  /** The cycles run so far. */
+  public final long cycles() {
+    return cycles;
+  }
+
+  /** The failures of its modules so far. */
+  public final long errors() {
+    return errors;
   }
 
   /** One cycle as the program of its kernel entity: the modules, then the reified cycle. */
@@ -356,6 +371,7 @@ public abstract class AbstractRobot {
     instant = now;
     cycling = Thread.currentThread();
     try {
+      forget();
       react();
       now.apply(RobotKind.CYCLE, observe());
     } finally {
@@ -370,187 +386,196 @@ public abstract class AbstractRobot {
   }
 
   /**
-   * Applies {@code change} to the program, at the kernel entity's adaptation point.
+   * Applies the program's side of {@code request}, at the kernel entity's adaptation point: builds
+   * the parts it names from the kind's catalog and changes the program.
+   *
+   * @throws IllegalArgumentException the request does not suit the program (an unknown name,
+   *     unsuitable parameters, a cycle): nothing changed, and the meta is told why
+   */
+  final void applyRequest(Adaptation.ApplyBehavior request) {
+    if (request.behavior().equals(RobotKind.CYCLE)) {
+      throw new IllegalArgumentException(
+          "robot " + name + ": a cycle is its clock's to run, not a request's");
+    }
+    Map<String, Object> in = RobotKind.input(request);
+    ProgramChange.Change change =
+        switch (request.behavior()) {
+          case RobotKind.SET_SCHEDULING -> setSchedulingOf(in);
+          case RobotKind.CHANGE_MODULE ->
+              new ProgramChange.ChangeModule((BehaviorModule) build(CatalogEntry.Part.MODULE, in));
+          case RobotKind.ADD_SCHEMA ->
+              new ProgramChange.AddSchema((Schema) build(CatalogEntry.Part.SCHEMA, in));
+          case RobotKind.REMOVE_SCHEMA -> new ProgramChange.RemoveSchema(text(in, RobotKind.NAME));
+          case RobotKind.ADD_CONNECTOR ->
+              new ProgramChange.AddConnector((Connector) build(CatalogEntry.Part.CONNECTOR, in));
+          case RobotKind.REMOVE_CONNECTOR ->
+              new ProgramChange.RemoveConnector((Connector) build(CatalogEntry.Part.CONNECTOR, in));
+          case RobotKind.SET_PARAMETER -> {
+            tune(in);
+            yield null;
+          }
+          default -> throw new IllegalArgumentException("robot " + name + ": " + request);
+        };
+    if (change != null) {
+      applyChange(change);
+    }
+    adapted(request);
+  }
+
+  /**
+   * The kind's behaviors changed while the robot runs (flow 5): its catalog is the new one, and a
+   * schema the kind forgot is removed from the program at the beginning of the next cycle.
+   */
+  final void catalogChanged(Behaviors<?> behaviors) {
+    Behaviors<?> before = catalog;
+    catalog = behaviors;
+    for (Behavior<?> b : before.all()) {
+      if (b instanceof CatalogEntry<?, ?> e
+          && e.part() == CatalogEntry.Part.SCHEMA
+          && behaviors.lookup(b.name()).isEmpty()) {
+        forgotten.add(e.partName());
+      }
+    }
+  }
+
+  /** Removes the running schemas the kind forgot. On the robot's thread. */
+  private void forget() {
+    if (forgotten.isEmpty()) {
+      return;
+    }
+    Set<String> running = new HashSet<>();
+    program.schemas().forEach(s -> running.add(s.name()));
+    for (String schema : forgotten) {
+      if (running.contains(schema)) {
+        try {
+          applyChange(new ProgramChange.RemoveSchema(schema));
+        } catch (IllegalArgumentException e) {
+          errors++;
+          errorHandler.onError(name, "kind forgot schema " + schema, e);
+        }
+      }
+    }
+    forgotten.clear();
+  }
+
+  private ProgramChange.Change setSchedulingOf(Map<String, Object> in) {
+    List<Schema> schemas = new ArrayList<>();
+    for (Object schema : list(in, RobotKind.SCHEMAS)) {
+      schemas.add(
+          (Schema) build(CatalogEntry.Part.SCHEMA, Map.of(RobotKind.NAME, String.valueOf(schema))));
+    }
+    List<Connector> connectors = new ArrayList<>();
+    for (Object connector : list(in, RobotKind.CONNECTORS)) {
+      connectors.add(
+          (Connector)
+              build(
+                  CatalogEntry.Part.CONNECTOR, Map.of(RobotKind.NAME, String.valueOf(connector))));
+    }
+    return new ProgramChange.SetScheduling(schemas, connectors);
+  }
+
+  /** Builds the part a request names, from the kind's catalog as this robot last heard it. */
+  private Object build(CatalogEntry.Part part, Map<String, Object> in) {
+    String partName = text(in, RobotKind.NAME);
+    Map<?, ?> parameters =
+        in.get(RobotKind.PARAMETERS) instanceof Map<?, ?> p ? p : Map.<String, Object>of();
+    Behaviors<?> known = catalog;
+    if (!(known.lookup(part.behavior(partName)).orElse(null) instanceof CatalogEntry<?, ?> entry)) {
+      List<String> names = new ArrayList<>();
+      for (Behavior<?> b : known.all()) {
+        if (b instanceof CatalogEntry<?, ?> e && e.part() == part) {
+          names.add(e.partName());
+        }
+      }
+      throw new IllegalArgumentException(
+          "robot "
+              + name
+              + ": its kind has no "
+              + part.word
+              + " '"
+              + partName
+              + "' in its catalog; it has "
+              + names);
+    }
+    return entry.build(this, Parameters.of(part.word + " " + partName, parameters));
+  }
+
+  private void tune(Map<String, Object> in) {
+    String module = text(in, RobotKind.MODULE);
+    for (BehaviorModule m : program.schedule().modules()) {
+      if (m.name().equals(module)) {
+        if (!(m instanceof Tunable tunable)) {
+          throw new IllegalArgumentException(
+              "robot " + name + ": module '" + module + "' has no parameters to set (not Tunable)");
+        }
+        tunable.tune(
+            text(in, RobotKind.PARAMETER),
+            requireNonNull(in.get(RobotKind.VALUE), RobotKind.VALUE));
+        changes++;
+        return;
+      }
+    }
+    throw new IllegalArgumentException(
+        "robot " + name + ": no module '" + module + "' in its program to set a parameter of");
+  }
+
+  private String text(Map<String, Object> in, String key) {
+    if (!(in.get(key) instanceof String s)) {
+      throw new IllegalArgumentException(
+          "robot " + name + ": the request " + in + " has no " + key + " string");
+    }
+    return s;
+  }
+
+  private List<?> list(Map<String, Object> in, String key) {
+    if (!(in.get(key) instanceof List<?> l)) {
+      throw new IllegalArgumentException(
+          "robot " + name + ": the request " + in + " has no " + key + " list");
+    }
+    return l;
+  }
+
+  /**
+   * Applies {@code change} to the program, keeping the compiled cycle of a module change.
    *
    * @throws IllegalArgumentException the program refuses it; nothing changed
    */
-  final void applyOrRefuse(Adaptation change) {
-    long before = meta.version();
-    meta.apply(change);
-    if (change instanceof Adaptation.ChangeModule c && plan != null && planVersion == before) {
+  private void applyChange(ProgramChange.Change change) {
+    long before = program.version();
+    program.apply(change);
+    if (change instanceof ProgramChange.ChangeModule c && plan != null && planVersion == before) {
       plan.replace(c.replacement());
-      planVersion = meta.version();
+      planVersion = program.version();
     }
-    applied.add(change);
-    adapted(change);
+    changes++;
   }
 
-  /**
-   * The robot's catalog of modules: builds the module named {@code name} with {@code parameters},
-   * for a {@link RobotKind#changeModule(String, Map)} request, which names a module instead of
-   * carrying one (a meta in another runtime cannot send code). On the robot's thread, at its
-   * adaptation point. The default has no catalog.
-   *
-   * @throws IllegalArgumentException no module of that name, or parameters it cannot take: the
-   *     request is refused and the meta told why
-   */
-  protected BehaviorModule module(String name, Map<String, Object> parameters) {
-    throw new IllegalArgumentException(
-        "robot " + this.name + " has no catalog of modules; cannot build '" + name + "'");
-  }
-
-  /**
-   * Called after {@code change}, requested by the robot's meta through the kernel, was applied to
-   * its program: on the robot's thread, at its adaptation point, so whatever it records is in step
-   * with the cycles (a run's journal, say). Does nothing by default.
-   */
-  protected void adapted(Adaptation change) {}
-
-  /**
-   * The signals emitted in the last cycle, after suppression, in slot order; for {@link
-   * #observe()}.
-   */
-  protected final List<CycleReport.Emission> emissions() {
-    Plan current = plan;
-    return current == null ? List.of() : current.emissions();
-  }
-
-  /**
-   * Sends {@code payload} to {@code target}, a reactive entity (another robot's, or any other) of
-   * this island or another: it takes it at its next release (see {@link CycleContext#emit}). For
-   * the robot's modules, during a cycle on an island.
-   *
-   * @throws IllegalStateException not during a cycle of the robot on an island
-   */
-  public final void emit(ReactiveEntity<?> target, Object payload) {
-    requireNonNull(target, "target");
-    requireNonNull(payload, "payload");
-    CycleContext<AbstractRobot> c = context;
-    if (c == null) {
-      throw new IllegalStateException(
-          "robot " + name + " emits only during one of its cycles on an island");
-    }
-    c.emit(target, payload);
-  }
-
-  /** Every module in schedule order, the body's end of cycle, the behavioral meta. */
-  private Plan react() {
+  /** Every module in schedule order, then the body's end of cycle. */
+  private void react() {
     long number = ++cycles;
     long now = time.nanoTime();
-    Plan current = plan();
-    current.run(number, now, body, failures);
+    plan().run(number, now, body, failures);
     body.endCycle();
-    BMetaRobot bmeta = behavioralMeta;
-    if (bmeta != null) {
-      notify(
-          bmeta,
-          new CycleReport(
-              name, number, now, current.emissions(), applied, rejected, failedModules));
-    }
-    applied.clear();
-    rejected.clear();
-    failedModules.clear();
-    return current;
-  }
-
-  /**
-   * Makes this robot a reactive entity of {@code island}, named as the robot, with one reaction
-   * that runs a cycle: from the island's next release, one cycle per release. The robot is then no
-   * longer stepped by hand; closing the island stops it.
-   *
-   * @return its entity: send it events, query its state, or name it as the target of another
-   *     robot's {@link #emit}
-   * @throws IllegalStateException the robot already runs on an island, or {@code island} is closed
-   * @throws IllegalArgumentException the island has an entity of the robot's name
-   */
-  public final ReactiveEntity<AbstractRobot> start(Island island) {
-    requireNonNull(island, "island");
-    synchronized (hosting) {
-      ReactiveEntity<AbstractRobot> e = entity;
-      if (e != null) {
-        throw new IllegalStateException(
-            "robot " + name + " already runs on island " + e.island().name());
-      }
-      e = IslandHost.start(this, island);
-      Adaptation next;
-      while ((next = requests.poll()) != null) {
-        IslandHost.request(e, next);
-      }
-      entity = e;
-      return e;
-    }
-  }
-
-  /** The cycles run so far. */
-  public final long cycles() {
-    return cycles;
-  }
-
-  /** The failures so far: modules' steps and the behavioral meta's notifications. */
-  public final long errors() {
-    return errors;
-  }
-
-  /** The adaptations rejected so far. */
-  public final long rejectedAdaptations() {
-    return rejections;
-  }
-
-  private void notify(BMetaRobot bmeta, CycleReport report) {
-    try {
-      bmeta.onCycle(report, this::request);
-    } catch (Exception e) {
-      errors++;
-      errorHandler.onError(name, "bmeta", e);
-    }
-  }
-
-  private void adapt() {
-    Adaptation next;
-    while ((next = requests.poll()) != null) {
-      apply(next);
-    }
-  }
-
-  /**
-   * Applies one requested adaptation, or records its rejection for the next {@link CycleReport}.
-   * Between cycles, on the thread that steps the robot (on an island: the island's).
-   */
-  final void apply(Adaptation next) {
-    try {
-      long before = meta.version();
-      meta.apply(next);
-      if (next instanceof Adaptation.ChangeModule change && plan != null && planVersion == before) {
-        plan.replace(change.replacement());
-        planVersion = meta.version();
-      }
-      applied.add(next);
-    } catch (IllegalArgumentException e) {
-      rejections++;
-      rejected.add(new CycleReport.Rejected(next, String.valueOf(e.getMessage())));
-      errorHandler.onError(name, "adaptation " + next, e);
-    }
   }
 
   private Plan plan() {
     Plan current = plan;
-    if (current == null || planVersion != meta.version()) {
-      connectorStates.keySet().retainAll(new java.util.HashSet<>(meta.connectors()));
+    if (current == null || planVersion != program.version()) {
+      connectorStates.keySet().retainAll(new HashSet<>(program.connectors()));
       current =
           new Plan(
-              meta.schedule(),
-              meta.schemas(),
-              meta.connectors(),
+              program.schedule(),
+              program.schemas(),
+              program.connectors(),
               c -> connectorStates.computeIfAbsent(c, k -> new ConnectorState()));
       plan = current;
-      planVersion = meta.version();
+      planVersion = program.version();
     }
     return current;
   }
 
   private void moduleFailed(BehaviorModule module, Exception error) {
     errors++;
-    failedModules.add(module.name());
     errorHandler.onError(name, module.name(), error);
   }
 }

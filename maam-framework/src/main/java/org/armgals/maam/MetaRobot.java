@@ -4,8 +4,9 @@ import java.util.List;
 
 /**
  * The scheduling meta level of a robot (paper §5.4, class {@code MetaRobot}): it holds the robot's
- * reactive program (schemas and connectors), applies {@link Adaptation}s to it and reschedules it
- * completely with its {@link Scheduler} at each change of schemas or connectors.
+ * reactive program (schemas and connectors), applies the changes the robot's registration methods
+ * and its behavioral meta's requests make, and reschedules it completely with its {@link Scheduler}
+ * at each change of schemas or connectors. What it shows here is read-only.
  *
  * <p>Threading: used by its robot's thread only (or by one thread before the robot runs).
  */
@@ -27,13 +28,4 @@ public sealed interface MetaRobot permits MetaRobotImpl {
 
   /** Counts the changes applied; a robot recompiles its cycle when it moves. */
   long version();
-
-  /**
-   * Applies {@code adaptation}, or nothing at all if it fails.
-   *
-   * @throws IllegalArgumentException an unknown or duplicate name, a module change of another kind
-   *     or other ports, a connector the scheduler refuses, or an input fed twice
-   * @throws CycleException the program would have a cycle
-   */
-  void apply(Adaptation adaptation);
 }

@@ -39,25 +39,31 @@ final class MetaRobotImpl implements MetaRobot {
     return version;
   }
 
-  @Override
-  public void apply(Adaptation adaptation) {
+  /**
+   * Applies {@code adaptation}, or nothing at all if it fails.
+   *
+   * @throws IllegalArgumentException an unknown or duplicate name, a module change of another kind
+   *     or other ports, a connector the scheduler refuses, or an input fed twice
+   * @throws CycleException the program would have a cycle
+   */
+  void apply(ProgramChange.Change adaptation) {
     requireNonNull(adaptation, "adaptation");
     List<Schema> newSchemas = new ArrayList<>(schemas);
     List<Connector> newConnectors = new ArrayList<>(connectors);
     switch (adaptation) {
-      case Adaptation.SetScheduling set -> {
+      case ProgramChange.SetScheduling set -> {
         newSchemas = new ArrayList<>(set.schemas());
         newConnectors = new ArrayList<>(set.connectors());
         checkUniqueSchemaNames(newSchemas);
       }
-      case Adaptation.AddSchema add -> {
+      case ProgramChange.AddSchema add -> {
         if (indexOf(add.schema().name()) >= 0) {
           throw new IllegalArgumentException(
               "schema name '" + add.schema().name() + "': already used");
         }
         newSchemas.add(add.schema());
       }
-      case Adaptation.RemoveSchema remove -> {
+      case ProgramChange.RemoveSchema remove -> {
         int at = indexOf(remove.name());
         if (at < 0) {
           throw new IllegalArgumentException(
@@ -69,14 +75,14 @@ final class MetaRobotImpl implements MetaRobot {
         newConnectors.removeIf(
             c -> gone.contains(c.source().module()) || gone.contains(c.target().module()));
       }
-      case Adaptation.AddConnector add -> newConnectors.add(add.connector());
-      case Adaptation.RemoveConnector remove -> {
+      case ProgramChange.AddConnector add -> newConnectors.add(add.connector());
+      case ProgramChange.RemoveConnector remove -> {
         if (!newConnectors.remove(remove.connector())) {
           throw new IllegalArgumentException(
               "connector " + remove.connector() + ": not in the program");
         }
       }
-      case Adaptation.ChangeModule change -> {
+      case ProgramChange.ChangeModule change -> {
         changeModule(change.replacement());
         return;
       }

@@ -141,12 +141,12 @@ final class Plan implements Inputs, Outputs {
   }
 
   /** What was emitted in the last cycle run, after suppression. */
-  List<CycleReport.Emission> emissions() {
-    List<CycleReport.Emission> emitted = new ArrayList<>();
+  List<Emission> emissions() {
+    List<Emission> emitted = new ArrayList<>();
     for (int slot = 0; slot < stamps.length; slot++) {
       Signal value = values[slot];
       if (stamps[slot] == cycle && value != null) {
-        emitted.add(new CycleReport.Emission(slotRefs[slot], value));
+        emitted.add(new Emission(slotRefs[slot], value));
       }
     }
     return emitted;

@@ -4,7 +4,7 @@ import static java.util.Objects.requireNonNull;
 
 /**
  * A port of a module, the module named: an end of a {@link Wire} or a {@link Connector}. Naming the
- * module rather than holding it lets a connector outlive a {@link Adaptation.ChangeModule} of
+ * module rather than holding it lets a connector outlive a {@link ProgramChange.ChangeModule} of
  * either end.
  *
  * @param module the module's name

@@ -75,27 +75,14 @@ class ConnectorSemanticsTest {
   }
 
   @Test
-  void suppressedSignalIsWhatTheBehavioralMetaSees() {
+  void suppressedSignalIsWhatTheRobotObserves() {
     TestRobot robot = wanderer();
     robot.addConnector(
         new Suppressor(
             PortRef.of(avoid, Sensing.OUT), PortRef.of(wander, Sensing.OUT), Duration.ZERO));
-    BMetaRobot.Modelled<CycleReport> last =
-        BMetaRobot.modelled(
-            new CycleReport(
-                "none",
-                0,
-                0,
-                java.util.List.of(),
-                java.util.List.of(),
-                java.util.List.of(),
-                java.util.List.of()),
-            (model, report) -> report,
-            model -> java.util.List.of());
-    robot.bmeta(last);
     robot.step(5, 1);
-    assertThat(last.model().emissions())
-        .contains(new CycleReport.Emission(PortRef.of(wander, Sensing.OUT), new Num(101)));
+    assertThat(robot.emissions())
+        .contains(new Emission(PortRef.of(wander, Sensing.OUT), new Num(101)));
   }
 
   @Test

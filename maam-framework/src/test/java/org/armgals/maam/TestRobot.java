@@ -3,7 +3,6 @@ package org.armgals.maam;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
-import org.armgals.kernel.AdaptationPoint;
 import org.armgals.maam.spi.ActuatorKey;
 import org.armgals.maam.spi.FakeBody;
 import org.armgals.maam.spi.SensorKey;
@@ -52,14 +51,6 @@ final class TestRobot extends AbstractRobot {
     cycle();
     time.now += PERIOD;
     return fake.lastCommand(MOTOR).orElseThrow();
-  }
-
-  void point(AdaptationPoint point) {
-    setAdaptationPoint(point);
-  }
-
-  void bmeta(BMetaRobot bmeta) {
-    setBehavioralMeta(bmeta);
   }
 
   /** Time the test moves by hand. */

@@ -7,15 +7,22 @@ import java.util.List;
 import java.util.Locale;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.gals.Island;
+import org.armgals.kernel.Kernel;
+import org.armgals.kernel.KernelOptions;
+import org.armgals.kernel.NotificationPolicy;
+import org.armgals.kernel.StructuralMeta;
 import org.armgals.maam.AbstractRobot;
+import org.armgals.maam.RobotKind;
+import org.armgals.representation.p.PState;
 
 /**
  * {@code gals name=island-overhead robots=<n> cpu_ratio=<x> min=<a> max=<b> wall_ratio=<w>
  * island_cpu_us=<i> hand_cpu_us=<h>}: what running robots on an arm-gals island costs, against
  * stepping the same kind of robots by hand. {@value #ROBOTS} robots of 50 modules (those of {@code
  * cycle-overhead}) are entities of one island, which {@link Island#step(long)} releases {@value
- * #INSTANTS} times a round as fast as it can (no clock); {@value #ROBOTS} other robots are stepped
- * by hand on the measuring thread as many times, one after the other.
+ * #INSTANTS} times a round as fast as it can (no clock), each a kernel entity that notifies no one
+ * (its cycle's reified step and state are kept, not sent); {@value #ROBOTS} other robots are
+ * stepped by hand on the measuring thread as many times, one after the other.
  *
  * <p>Unlike {@code cycle-overhead}, the island's work is spread over its runtime's workers, so it
  * is timed in the whole process's CPU time ({@code com.sun.management.OperatingSystemMXBean}),
@@ -44,13 +51,24 @@ final class IslandOverhead {
     int workers = Integer.getInteger("gals.workers", Runtime.getRuntime().availableProcessors());
     try (ActiveRuntime runtime =
             ActiveRuntime.builder().name("island-overhead").workers(workers).jmx(false).build();
+        Kernel kernel =
+            org.armgals.kernel.StructuralMeta.bootstrap(
+                runtime, KernelOptions.defaults().withJmx(false));
         Island island = Island.builder("overhead", runtime).jmx(false).build()) {
+      StructuralMeta<PState> kind = null;
       List<AbstractRobot> hosted = new ArrayList<>();
       for (int r = 0; r < ROBOTS; r++) {
         CycleOverhead.ConstantBody body = new CycleOverhead.ConstantBody();
         bodies.add(body);
         AbstractRobot robot = CycleOverhead.robot("robot" + r, body, new ArrayList<>());
-        robot.start(island);
+        if (kind == null) {
+          kind = RobotKind.define(kernel, "BenchRobot", robot.observation());
+        }
+        robot.start(
+            island,
+            kind,
+            kernel.basicBehavioralMeta(),
+            island.entityOptions().withNotification(NotificationPolicy.quiet()));
         hosted.add(robot);
         CycleOverhead.ConstantBody handBody = new CycleOverhead.ConstantBody();
         bodies.add(handBody);

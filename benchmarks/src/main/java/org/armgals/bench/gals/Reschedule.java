@@ -6,15 +6,15 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import org.armgals.active.TimeSource;
-import org.armgals.maam.Adaptation;
+import org.armgals.maam.AbstractRobot;
 import org.armgals.maam.BehaviorModule;
 import org.armgals.maam.Connector;
 import org.armgals.maam.Derivator;
 import org.armgals.maam.Inhibitor;
 import org.armgals.maam.MetaRobot;
 import org.armgals.maam.PortRef;
-import org.armgals.maam.Scheduler;
 import org.armgals.maam.Schema;
+import org.armgals.maam.spi.FakeBody;
 
 /**
  * {@code gals name=reschedule modules=<n> ms=<x>}: the time of one complete rescheduling of a robot
@@ -31,7 +31,9 @@ final class Reschedule {
   static void run() {
     TimeSource time = TimeSource.system();
     for (int n : new int[] {1_000, 10_000, 100_000}) {
-      MetaRobot meta = MetaRobot.create(Scheduler.topological());
+      AbstractRobot robot =
+          new AbstractRobot("bench", FakeBody.builder("bench-body").build(), time) {};
+      MetaRobot meta = robot.metaRobot();
       Random random = new Random(n);
       List<Schema> schemas = new ArrayList<>();
       for (int s = 0; s < n / PER_SCHEMA - 1; s++) {
@@ -58,7 +60,7 @@ final class Reschedule {
                     PortRef.of(target, BenchModules.IN),
                     Duration.ofMillis(20)));
       }
-      meta.apply(new Adaptation.SetScheduling(schemas, connectors));
+      robot.setScheduling(schemas, connectors);
       Schema extra = schema("extra", random);
       int rounds = n >= 100_000 ? 10 : n >= 10_000 ? 50 : 400;
       long[] nanos = new long[2 * rounds];
@@ -70,9 +72,9 @@ final class Reschedule {
           cpuStart = threads.getCurrentThreadCpuTime();
         }
         long start = time.nanoTime();
-        meta.apply(new Adaptation.AddSchema(extra));
+        robot.addSchema(extra);
         long added = time.nanoTime();
-        meta.apply(new Adaptation.RemoveSchema("extra"));
+        robot.removeSchema("extra");
         nanos[2 * r] = added - start;
         nanos[2 * r + 1] = time.nanoTime() - added;
       }

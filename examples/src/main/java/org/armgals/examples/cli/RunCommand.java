@@ -8,6 +8,7 @@ import java.time.Duration;
 import java.util.Optional;
 import java.util.OptionalLong;
 import java.util.concurrent.Callable;
+import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -63,6 +64,16 @@ final class RunCommand implements Callable<Integer> {
   URI broker;
 
   @Option(
+      names = "--meta",
+      paramLabel = "<place>",
+      defaultValue = "local",
+      converter = MetaPlaceConverter.class,
+      description =
+          "where the meta level runs: local (in the robots' JVM) or remote (in a JVM of its own,"
+              + " over the broker); default ${DEFAULT-VALUE}")
+  RunSettings.MetaPlace meta = RunSettings.MetaPlace.LOCAL;
+
+  @Option(
       names = "--out",
       paramLabel = "<dir>",
       description = "where the run leaves its trace and pictures (default runs/<example>)")
@@ -92,7 +103,8 @@ final class RunCommand implements Callable<Integer> {
             Optional.ofNullable(atoms),
             realTime,
             Optional.ofNullable(broker),
-            outDir == null ? Path.of("runs", example.name()) : outDir);
+            outDir == null ? Path.of("runs", example.name()) : outDir,
+            meta);
     Summary summary = example.run(settings, out);
     out.println();
     out.println("summary of " + example.name() + ":");
@@ -145,5 +157,20 @@ final class RunCommand implements Callable<Integer> {
           "--seconds must be at least a nanosecond (0.000000001), was " + given);
     }
     return Duration.ofNanos(nanos);
+  }
+
+  /** {@code --meta local|remote}, any case; anything else names the value and the choices. */
+  static final class MetaPlaceConverter
+      implements CommandLine.ITypeConverter<RunSettings.MetaPlace> {
+    @Override
+    public RunSettings.MetaPlace convert(String value) {
+      for (RunSettings.MetaPlace place : RunSettings.MetaPlace.values()) {
+        if (place.name().equalsIgnoreCase(value)) {
+          return place;
+        }
+      }
+      throw new CommandLine.TypeConversionException(
+          "'" + value + "' is not a place for the meta level; expected local or remote");
+    }
   }
 }

@@ -19,6 +19,7 @@ import java.util.OptionalLong;
  * @param realTime paced to real time, instead of as fast as possible
  * @param broker an external Artemis broker, instead of the embedded one
  * @param out where the run leaves its trace and pictures
+ * @param meta where the robots' meta level runs: in their JVM, or in another one over the broker
  */
 public record RunSettings(
     OptionalLong cycles,
@@ -28,7 +29,29 @@ public record RunSettings(
     Optional<Integer> atoms,
     boolean realTime,
     Optional<URI> broker,
-    Path out) {
+    Path out,
+    MetaPlace meta) {
+
+  /** Where a run's meta level runs ({@code --meta}). */
+  public enum MetaPlace {
+    /** In the robots' JVM: no broker hop, no serialization. */
+    LOCAL,
+    /** In a JVM of its own, over the broker (embedded over netty on 127.0.0.1 unless given). */
+    REMOTE
+  }
+
+  /** Settings with the meta level in the robots' JVM. */
+  public RunSettings(
+      OptionalLong cycles,
+      Optional<Duration> simulated,
+      Duration period,
+      long seed,
+      Optional<Integer> atoms,
+      boolean realTime,
+      Optional<URI> broker,
+      Path out) {
+    this(cycles, simulated, period, seed, atoms, realTime, broker, out, MetaPlace.LOCAL);
+  }
 
   /** Checks the options against each other and their ranges. */
   public RunSettings {
@@ -38,6 +61,7 @@ public record RunSettings(
     requireNonNull(atoms, "atoms");
     requireNonNull(broker, "broker");
     requireNonNull(out, "out");
+    requireNonNull(meta, "meta");
     if (cycles.isPresent() && simulated.isPresent()) {
       throw new IllegalArgumentException("give --cycles or --seconds, not both");
     }
@@ -57,6 +81,11 @@ public record RunSettings(
 
   /** These settings, writing into {@code out} instead. */
   public RunSettings withOut(Path out) {
-    return new RunSettings(cycles, simulated, period, seed, atoms, realTime, broker, out);
+    return new RunSettings(cycles, simulated, period, seed, atoms, realTime, broker, out, meta);
+  }
+
+  /** These settings with the meta level at {@code place}. */
+  public RunSettings withMeta(MetaPlace place) {
+    return new RunSettings(cycles, simulated, period, seed, atoms, realTime, broker, out, place);
   }
 }

@@ -4,26 +4,23 @@ import static java.util.Objects.requireNonNull;
 
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
-import org.armgals.active.ActiveRuntime;
-import org.armgals.active.ShutdownMode;
+import java.util.Map;
+import java.util.Optional;
 import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
 import org.armgals.examples.sim.Crew;
 import org.armgals.examples.sim.Journal;
+import org.armgals.examples.sim.MetaLevel;
+import org.armgals.examples.sim.Reflection;
 import org.armgals.examples.sim.SimExample;
 import org.armgals.gals.Island;
 import org.armgals.kernel.AdaptationPoint;
-import org.armgals.kernel.BehavioralMeta;
-import org.armgals.kernel.Damping;
-import org.armgals.kernel.Entity;
 import org.armgals.kernel.Kernel;
-import org.armgals.kernel.KernelOptions;
 import org.armgals.kernel.NotificationPolicy;
 import org.armgals.kernel.StructuralMeta;
-import org.armgals.maam.Adaptation;
-import org.armgals.maam.RobotKind;
 import org.armgals.maam.sim.Scene;
 import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;
@@ -102,6 +99,49 @@ public final class Caterpillar implements SimExample {
     return Scenes.parse(text.toString());
   }
 
+  /**
+   * The head's meta level: {@code bmrobot<head>} ({@link CaterpillarMeta}) watches the head's
+   * states; every segment is of the kind {@code CaterpillarSegment}.
+   */
+  @Override
+  public Optional<MetaLevel> metaLevel(RunSettings settings) {
+    return Optional.of(new Level(atoms(settings)));
+  }
+
+  /** The caterpillar's meta level: the same code in the robots' JVM or another. */
+  static final class Level implements MetaLevel {
+    private final int atoms;
+    private final CaterpillarMeta meta;
+
+    Level(int atoms) {
+      this.atoms = atoms;
+      this.meta = new CaterpillarMeta("bmrobot" + atoms);
+    }
+
+    @Override
+    public Map<String, StructuralMeta<PState>> kinds(Kernel kernel) {
+      StructuralMeta<PState> kind = CaterpillarSegment.kind(kernel);
+      Map<String, StructuralMeta<PState>> kinds = new LinkedHashMap<>();
+      for (int id = 1; id <= atoms; id++) {
+        kinds.put("segment" + id, kind);
+      }
+      return kinds;
+    }
+
+    @Override
+    public List<Watch> watches(MetaNotes notes) {
+      return List.of(new Watch(meta, List.of("segment" + atoms), ""));
+    }
+
+    @Override
+    public List<Summary.Entry> figures() {
+      return List.of(
+          new Summary.Entry(
+              "stride", String.format(Locale.ROOT, "%.2f rad at the end", meta.stride())),
+          new Summary.Entry("steps judged by the meta level", Integer.toString(meta.steps())));
+    }
+  }
+
   @Override
   public Crew start(Simulation sim, RunSettings settings, Journal journal) {
     requireNonNull(sim, "sim");
@@ -110,71 +150,33 @@ public final class Caterpillar implements SimExample {
     List<Integer> ids = sim.atomIds();
     double cycleSeconds = settings.period().toNanos() / 1e9;
     int head = ids.get(ids.size() - 1);
-    ActiveRuntime runtime =
-        ActiveRuntime.builder().name("caterpillar").workers(2).jmx(false).build();
-    Kernel kernel =
-        org.armgals.kernel.StructuralMeta.bootstrap(
-            runtime, KernelOptions.defaults().withTimeSource(sim::timeNanos).withJmx(false));
-    List<CaterpillarSegment> segments = new ArrayList<>();
-    List<Island> islands = new ArrayList<>();
-    CaterpillarMeta meta = null;
-    StructuralMeta<PState> kind = null;
-    for (int i = 0; i < ids.size(); i++) {
-      int id = ids.get(i);
-      CaterpillarSegment segment =
-          new CaterpillarSegment(
-              "segment" + id,
-              TrackedBody.of(sim, id),
-              sim::timeNanos,
-              ids.size() - 1 - i,
-              cycleSeconds);
-      if (kind == null) {
-        kind = RobotKind.define(kernel, "CaterpillarSegment", segment.observation());
-      }
-      Island island =
-          Island.builder("segment" + id, runtime)
-              .period(settings.period())
-              .adaptationPoint(AdaptationPoint.BEGIN_OF_CYCLE)
-              .timeSource(sim::timeNanos)
-              .jmx(false)
-              .build();
-      if (id == head) {
-        CaterpillarMeta policy = new CaterpillarMeta(segment.builtPacemaker());
-        BehavioralMeta bmrobot = kernel.newBehavioralMeta("bmrobot" + id, policy, Damping.none());
-        segment.start(
+    Reflection reflection =
+        Reflection.open(sim, settings, name(), metaLevel(settings).orElseThrow(), journal);
+    try {
+      List<CaterpillarSegment> segments = new ArrayList<>();
+      for (int i = 0; i < ids.size(); i++) {
+        int id = ids.get(i);
+        CaterpillarSegment segment =
+            new CaterpillarSegment(
+                "segment" + id,
+                TrackedBody.of(sim, id),
+                sim::timeNanos,
+                ids.size() - 1 - i,
+                cycleSeconds);
+        Island island = reflection.island("segment" + id, AdaptationPoint.BEGIN_OF_CYCLE);
+        reflection.start(
+            segment,
+            id,
             island,
-            kind,
-            bmrobot,
-            island
-                .entityOptions()
-                .withNotification(NotificationPolicy.statesOnly())
-                .withLockStep(1, LOCK_STEP_TIMEOUT));
-        segment.onAdapted(change -> journal(journal, policy, id, change));
-        meta = policy;
-      } else {
-        segment.start(
-            island,
-            kind,
-            kernel.basicBehavioralMeta(),
-            island.entityOptions().withNotification(NotificationPolicy.quiet()));
+            id == head ? NotificationPolicy.statesOnly() : NotificationPolicy.quiet());
+        sim.setController(id, (atom, cycle) -> reflection.step(island));
+        segments.add(segment);
       }
-      sim.setController(id, (atom, cycle) -> island.step());
-      segments.add(segment);
-      islands.add(island);
-    }
-    return new CaterpillarCrew(
-        sim, segments, requireNonNull(meta, "meta"), islands, kernel, runtime);
-  }
-
-  /** How long a cycle waits for the head's meta level before the head runs free. */
-  private static final Duration LOCK_STEP_TIMEOUT = Duration.ofSeconds(30);
-
-  private static void journal(Journal journal, CaterpillarMeta meta, int atom, Adaptation change) {
-    String[] reason = meta.nextReason();
-    if (reason != null) {
-      journal.adaptation(atom, reason[0], reason[1]);
-    } else {
-      journal.adaptation(atom, change.getClass().getSimpleName(), "asked by the meta level");
+      reflection.ready();
+      return new CaterpillarCrew(sim, segments, reflection);
+    } catch (RuntimeException | Error e) {
+      reflection.close();
+      throw e;
     }
   }
 
@@ -193,21 +195,18 @@ public final class Caterpillar implements SimExample {
     return n;
   }
 
-  /** The segments, their islands and kernel, and the head's meta level of one run. */
-  private record CaterpillarCrew(
-      Simulation sim,
-      List<CaterpillarSegment> segments,
-      CaterpillarMeta meta,
-      List<Island> islands,
-      Kernel kernel,
-      ActiveRuntime runtime)
+  /** The segments and the reflective side of one run. */
+  private record CaterpillarCrew(Simulation sim, List<CaterpillarSegment> segments, Reflection loop)
       implements Crew {
 
     @Override
+    public Optional<Reflection> reflection() {
+      return Optional.of(loop);
+    }
+
+    @Override
     public void close() {
-      islands.forEach(Island::close);
-      kernel.close();
-      runtime.shutdown(ShutdownMode.CANCEL, Duration.ofSeconds(5));
+      loop.close();
     }
 
     @Override
@@ -219,20 +218,9 @@ public final class Caterpillar implements SimExample {
         }
       }
       long errors = segments.stream().mapToLong(CaterpillarSegment::errors).sum();
-      settle();
       return List.of(
-          new Summary.Entry(
-              "stride", String.format(Locale.ROOT, "%.2f rad at the end", meta.stride())),
-          new Summary.Entry("steps judged by the meta level", Integer.toString(meta.steps())),
           new Summary.Entry("bonds held", bonds + " of " + (sim.atomIds().size() - 1)),
           new Summary.Entry("module errors", Long.toString(errors)));
-    }
-
-    /** Waits until the head's meta has handled every notification sent to it so far. */
-    private void settle() {
-      CaterpillarSegment head = segments.get(segments.size() - 1);
-      Entity entity = head.kernelEntity().orElseThrow();
-      entity.behavioralMeta().orElseThrow().model(entity).getValue();
     }
   }
 }

@@ -6,7 +6,6 @@ import static org.armgals.examples.robots.CaterpillarSignals.STROKE;
 import static org.armgals.examples.robots.CaterpillarSignals.TRAVEL;
 
 import java.util.Map;
-import java.util.function.Consumer;
 import org.armgals.active.TimeSource;
 import org.armgals.examples.robots.CaterpillarModules.Feet;
 import org.armgals.examples.robots.CaterpillarModules.Listen;
@@ -16,12 +15,14 @@ import org.armgals.examples.robots.CaterpillarModules.Relay;
 import org.armgals.examples.robots.CaterpillarModules.Step;
 import org.armgals.examples.robots.CaterpillarSignals.Beat;
 import org.armgals.examples.robots.CaterpillarSignals.Travel;
+import org.armgals.kernel.Kernel;
+import org.armgals.kernel.StructuralMeta;
 import org.armgals.maam.AbstractRobot;
-import org.armgals.maam.Adaptation;
-import org.armgals.maam.BehaviorModule;
-import org.armgals.maam.CycleReport;
+import org.armgals.maam.Emission;
+import org.armgals.maam.RobotKind;
 import org.armgals.maam.Schema;
 import org.armgals.maam.spi.Body;
+import org.armgals.representation.p.PState;
 
 /**
  * The program every segment of a caterpillar runs (paper §5.4): one schema, <i>wave</i>,
@@ -47,7 +48,6 @@ final class CaterpillarSegment extends AbstractRobot {
   static final String X = "x";
 
   private final Pacemaker pacemaker;
-  private Consumer<Adaptation> onAdapted = change -> {};
 
   /**
    * @param fromHead the segment's place from the head, 0 first
@@ -83,36 +83,22 @@ final class CaterpillarSegment extends AbstractRobot {
             .build());
   }
 
-  /** The pacemaker the segment was built with (a meta level may have changed it since). */
-  Pacemaker builtPacemaker() {
-    return pacemaker;
-  }
-
-  /** Tells {@code listener} of each change its meta level made, when it is applied. */
-  void onAdapted(Consumer<Adaptation> listener) {
-    this.onAdapted = listener;
-  }
-
-  @Override
-  protected void adapted(Adaptation change) {
-    onAdapted.accept(change);
-  }
-
   /**
-   * The catalog a meta level of another runtime asks from: the {@code pacemaker} with a {@code
-   * stride} (radians) from a {@code phase}, a copy of the one the segment was built with.
+   * The kind of the segments, {@code CaterpillarSegment}, in {@code kernel}: they observe the phase
+   * of their beat and their travel, and its catalog has the {@value #PACEMAKER}, built with a
+   * {@value #STRIDE} (radians) from a {@value #PHASE} as a copy of the one the segment was built
+   * with, which the head's meta level asks for.
    */
-  @Override
-  protected BehaviorModule module(String name, Map<String, Object> parameters) {
-    if (name.equals(PACEMAKER)
-        && parameters.get(STRIDE) instanceof Number stride
-        && parameters.get(PHASE) instanceof Number phase) {
-      return pacemaker.withStride(stride.doubleValue(), phase.doubleValue());
-    }
-    return super.module(name, parameters);
+  static StructuralMeta<PState> kind(Kernel kernel) {
+    return RobotKind.builder("CaterpillarSegment", CaterpillarSegment.class)
+        .observing(Map.of(PHASE, -1.0, X, 0.0))
+        .module(
+            PACEMAKER,
+            (segment, p) -> segment.pacemaker.withStride(p.number(STRIDE), p.number(PHASE)))
+        .define(kernel);
   }
 
-  /** The pacemaker's stride in a catalog request, radians. */
+  /** The pacemaker's stride in a request, radians. */
   static final String STRIDE = "stride";
 
   /** What a segment shows its meta level: the robot's own, its beat's phase, its travel. */
@@ -121,7 +107,7 @@ final class CaterpillarSegment extends AbstractRobot {
     Map<String, Object> m = super.observe();
     double phase = -1;
     double x = 0;
-    for (CycleReport.Emission e : emissions()) {
+    for (Emission e : emissions()) {
       if (e.port().port().equals(BEAT) && e.signal() instanceof Beat beat) {
         phase = beat.phase();
       } else if (e.port().port().equals(TRAVEL) && e.signal() instanceof Travel travel) {

@@ -8,19 +8,23 @@ import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
 import org.armgals.active.JmsTransport;
 import org.armgals.active.ShutdownMode;
+import org.armgals.gals.Emission;
 import org.armgals.gals.Island;
-import org.armgals.gals.ReactiveEntity;
-import org.armgals.maam.AbstractRobot;
+import org.armgals.kernel.Kernel;
+import org.armgals.kernel.KernelOptions;
+import org.armgals.kernel.StructuralMeta;
+import org.armgals.maam.RobotKind;
+import org.armgals.representation.p.PState;
 
 /**
  * The main class of an atom's JVM in {@link Distributed}: joins the broker through its own {@link
  * JmsTransport}, runs the atom's {@link DistributedCrawler} on an island of its own, started on
  * real time, and leaves when its standard input ends (the world closes it, or ends).
  *
- * <p>The robot's entity has a second reaction, {@code link}, that runs after the robot's cycle in
- * every release: it feeds the readings taken at the release to the body, for the robot's next
- * cycle, and sends the world the commands of the cycle just run, if they answer new readings (and,
- * once, that the atom has joined).
+ * <p>The robot is a kernel entity of the atom's runtime: the world sends it its readings as
+ * stimuli, which its {@code receive} schema feeds to the body at each release, and its {@code
+ * report} schema sends the world the commands of the cycle just run, if they answer new readings.
+ * It tells the world it has joined once started.
  *
  * <p>Arguments: atom id, index in the chain, atoms in the chain, broker URL, topic prefix, the
  * world's address (runtime and id), the island's period in nanoseconds. The broker's credentials,
@@ -62,7 +66,8 @@ final class DistributedAtomMain {
     String name = "atom" + atom + "-" + pid;
     String user = System.getenv(USER);
     JmsTransport.Builder builder =
-        JmsTransport.builder().prefix(prefix).allow(DistributedWire.ALLOWED);
+        Kernel.allowKernelEvents(
+            JmsTransport.builder().prefix(prefix).allow(DistributedWire.ALLOWED));
     if (user == null) {
       builder.broker(url);
     } else {
@@ -72,15 +77,31 @@ final class DistributedAtomMain {
     try (JmsTransport transport = builder.build()) {
       ActiveRuntime runtime =
           ActiveRuntime.builder().name(name).workers(1).jmx(false).transport(transport).build();
-      try (Island island =
-          Island.builder("atom" + atom, runtime).period(period).jmx(false).build()) {
+      try (Kernel kernel =
+              org.armgals.kernel.StructuralMeta.bootstrap(
+                  runtime, KernelOptions.defaults().withJmx(false));
+          Island island =
+              Island.builder("atom" + atom, runtime).period(period).jmx(false).build()) {
         DistributedRemoteBody body = new DistributedRemoteBody(atom);
-        DistributedCrawler robot = new DistributedCrawler(body, index, count);
-        ReactiveEntity<AbstractRobot> entity = robot.start(island);
-        entity.addReaction(
-            "link",
-            new DistributedLink(
-                world, body, new DistributedWire.Joined(atom, entity.address(), pid, name)));
+        DistributedCrawler[] self = new DistributedCrawler[1];
+        DistributedCrawler robot =
+            new DistributedCrawler(
+                body,
+                index,
+                count,
+                payload ->
+                    runtime.ref(world).send(new Emission(self[0].address(), world, payload)));
+        self[0] = robot;
+        StructuralMeta<PState> kind =
+            RobotKind.define(kernel, "DistributedCrawler", robot.observation());
+        robot.start(island, kind, kernel.basicBehavioralMeta(), island.entityOptions());
+        runtime
+            .ref(world)
+            .send(
+                new Emission(
+                    robot.address(),
+                    world,
+                    new DistributedWire.Joined(atom, robot.address(), pid, name)));
         island.start();
         System.out.println(
             "atom " + atom + " runs on island " + island.name() + " of runtime " + name);

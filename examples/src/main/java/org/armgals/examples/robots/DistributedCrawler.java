@@ -1,6 +1,9 @@
 package org.armgals.examples.robots;
 
+import static java.util.Objects.requireNonNull;
+
 import java.util.List;
+import java.util.function.Consumer;
 import org.armgals.maam.AbstractRobot;
 import org.armgals.maam.Actuator;
 import org.armgals.maam.Inputs;
@@ -21,7 +24,9 @@ import org.armgals.maam.spi.LegAngles;
  * reactor placing the atom in the chain's wave, {@link DistributedGait}), which feeds {@code legs}
  * (an actuator driving the two lower legs). The phase comes from the world's time in the readings,
  * not from the robot's own clock: the robot answers each reading with the same commands however
- * late it comes, so the world's run does not depend on when the atom's island ticks.
+ * late it comes, so the world's run does not depend on when the atom's island ticks. Its {@code
+ * receive} schema feeds the body the readings the world sent its entity; its {@code report} schema
+ * sends the world the commands of each cycle.
  */
 final class DistributedCrawler extends AbstractRobot {
   static final Port<Phase> PHASE = Port.of("phase", Phase.class);
@@ -33,14 +38,23 @@ final class DistributedCrawler extends AbstractRobot {
   /** Where the two lower legs should point. */
   record Stride(LegAngles minusZ, LegAngles minusY) implements Signal {}
 
-  DistributedCrawler(DistributedRemoteBody body, int index, int count) {
+  private final DistributedRemoteBody remote;
+  private final Consumer<Object> toWorld;
+
+  /**
+   * @param toWorld where the robot's messages to the world go (its commands), on the robot's thread
+   */
+  DistributedCrawler(DistributedRemoteBody body, int index, int count, Consumer<Object> toWorld) {
     super(
         "crawler-" + body.id(),
         body,
         () -> Math.max(0, body.read(DistributedRemoteBody.WORLD_TIME)));
+    this.remote = body;
+    this.toWorld = requireNonNull(toWorld, "toWorld");
     WorldClock clock = new WorldClock("clock", index, count);
     Gait gait = new Gait("gait");
     LegDrive legs = new LegDrive("legs");
+    addSchema(Schema.builder("receive").add(new Inlink()).build());
     addSchema(
         Schema.builder("crawl")
             .add(clock)
@@ -49,6 +63,53 @@ final class DistributedCrawler extends AbstractRobot {
             .wire(clock, PHASE, gait, PHASE)
             .wire(gait, STRIDE, legs, STRIDE)
             .build());
+    addSchema(Schema.builder("report").add(new Outlink()).build());
+  }
+
+  /**
+   * Feeds the body the readings the world sent the robot's entity, taken at this release: the first
+   * module of each cycle.
+   */
+  private final class Inlink implements Perceptor {
+    @Override
+    public String name() {
+      return "inlink";
+    }
+
+    @Override
+    public List<Port<?>> outputs() {
+      return List.of();
+    }
+
+    @Override
+    public void perceive(Body body, Outputs out) {
+      for (Object input : received()) {
+        if (input instanceof DistributedWire.Readings readings) {
+          remote.feed(readings);
+        }
+      }
+    }
+  }
+
+  /** Sends the world the commands of this cycle, if they answer new readings: the last module. */
+  private final class Outlink implements Actuator {
+    @Override
+    public String name() {
+      return "outlink";
+    }
+
+    @Override
+    public List<Port<?>> inputs() {
+      return List.of();
+    }
+
+    @Override
+    public void act(Inputs in, Body body) {
+      DistributedWire.Commands commands = remote.takeCommands();
+      if (commands != null) {
+        toWorld.accept(commands);
+      }
+    }
   }
 
   /** The atom's phase from the world's time; nothing before the first readings. */

@@ -25,7 +25,8 @@ import org.armgals.active.TimeSource;
 import org.armgals.examples.cli.Summary;
 import org.armgals.examples.sim.Crew;
 import org.armgals.examples.sim.Journal;
-import org.armgals.gals.Emission;
+import org.armgals.kernel.Kernel;
+import org.armgals.kernel.Stimulus;
 import org.armgals.maam.sim.Simulation;
 import org.armgals.maam.spi.Atom;
 import org.armgals.maam.spi.Body;
@@ -123,7 +124,8 @@ final class DistributedCrew implements Crew {
     long pid = ProcessHandle.current().pid();
     String prefix = "armgals-distributed-" + pid;
     JmsTransport.Builder builder =
-        JmsTransport.builder().prefix(prefix).allow(DistributedWire.ALLOWED);
+        Kernel.allowKernelEvents(
+            JmsTransport.builder().prefix(prefix).allow(DistributedWire.ALLOWED));
     try {
       if (url != null) {
         probe(url);
@@ -230,7 +232,7 @@ final class DistributedCrew implements Crew {
     ActiveRuntime r = requireNonNull(runtime, "runtime");
     Address from = requireNonNull(mailbox, "mailbox").address();
     for (DistributedWire.Joined j : joined) {
-      r.ref(j.robot()).send(new Emission(from, j.robot(), readings(j.atom(), cycle)));
+      r.ref(j.robot()).send(new Stimulus(from, j.robot(), "readings", readings(j.atom(), cycle)));
     }
   }
 

@@ -3,23 +3,27 @@ package org.armgals.examples.robots;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.OptionalDouble;
 import org.armgals.examples.cli.Summary;
 import org.armgals.examples.robots.EnergyModules.Stepper;
 import org.armgals.examples.sim.Crew;
+import org.armgals.examples.sim.Reflection;
+import org.armgals.gals.Island;
 import org.armgals.maam.Schedule;
 import org.armgals.maam.sim.Simulation;
 import org.armgals.maam.spi.Atom;
 import org.jspecify.annotations.Nullable;
 
 /**
- * One run of the {@link EnergySaver}: its robot, its meta level if it has one, and when the battery
- * ran out. Used on the simulation's thread.
+ * One run of the {@link EnergySaver}: its robot, its meta level if it has one, its reflective side,
+ * and when the battery ran out. Used on the simulation's thread.
  */
 final class EnergyCrew implements Crew {
   private final Simulation sim;
   private final EnergyRobot robot;
-  private final @Nullable EnergyMeta meta;
+  private final EnergySaver.@Nullable Level level;
+  private final Reflection reflection;
   private final double capacity;
   private double emptyAt = Double.NaN;
   private EnergyGait gait = EnergyGait.FAST;
@@ -28,10 +32,16 @@ final class EnergyCrew implements Crew {
   private double seconds;
   private double joules;
 
-  EnergyCrew(Simulation sim, EnergyRobot robot, @Nullable EnergyMeta meta, double capacity) {
+  EnergyCrew(
+      Simulation sim,
+      EnergyRobot robot,
+      EnergySaver.@Nullable Level level,
+      Reflection reflection,
+      double capacity) {
     this.sim = sim;
     this.robot = robot;
-    this.meta = meta;
+    this.level = level;
+    this.reflection = reflection;
     this.capacity = capacity;
     this.joules = capacity;
   }
@@ -40,8 +50,8 @@ final class EnergyCrew implements Crew {
    * One control cycle: the robot's, then a look at the battery (read at the cycle's start) and at
    * the gait it left, for the summary's figures.
    */
-  void cycle() {
-    robot.cycle();
+  void cycle(Island island) {
+    reflection.step(island);
     seconds = sim.timeNanos() / 1e9;
     if (Double.isNaN(emptyAt)) {
       joules = robot.body().read(Atom.BATTERY);
@@ -72,8 +82,19 @@ final class EnergyCrew implements Crew {
         .orElseThrow();
   }
 
+  /** The meta level of a local run; null for the robot without one. */
   @Nullable EnergyMeta meta() {
-    return meta;
+    return level == null ? null : level.meta();
+  }
+
+  @Override
+  public Optional<Reflection> reflection() {
+    return Optional.of(reflection);
+  }
+
+  @Override
+  public void close() {
+    reflection.close();
   }
 
   EnergyRobot robot() {
@@ -111,15 +132,6 @@ final class EnergyCrew implements Crew {
             emptyAt().isPresent()
                 ? String.format(Locale.ROOT, "%.2f s", emptyAt().getAsDouble())
                 : "not yet"));
-    if (meta != null) {
-      figures.add(
-          new Summary.Entry("energy events dropped by the meta's filter", "" + meta.dropped()));
-      figures.add(
-          new Summary.Entry("energy events followed after the threshold", "" + meta.followed()));
-      figures.add(new Summary.Entry("meta's filter", meta.filter().expression()));
-    } else {
-      figures.add(new Summary.Entry("meta level", "none"));
-    }
     return figures;
   }
 }

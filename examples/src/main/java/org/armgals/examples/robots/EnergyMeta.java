@@ -4,128 +4,107 @@ import static java.util.Objects.requireNonNull;
 
 import java.util.Locale;
 import java.util.Map;
-import java.util.function.Consumer;
-import org.armgals.active.Filter;
-import org.armgals.examples.robots.EnergyModules.Stepper;
-import org.armgals.examples.robots.EnergySignals.EnergyLevel;
-import org.armgals.examples.robots.EnergySignals.EnergyThreshold;
-import org.armgals.examples.sim.Journal;
-import org.armgals.maam.Adaptation;
+import org.armgals.examples.sim.MetaLevel;
+import org.armgals.kernel.Damping;
+import org.armgals.kernel.Notification;
+import org.armgals.kernel.StateEvent;
+import org.armgals.kernel.ThresholdEvent;
+import org.armgals.kernel.spi.MetaContext;
 import org.armgals.maam.BMetaRobot;
-import org.armgals.maam.CycleReport;
-import org.armgals.maam.Signal;
+import org.armgals.maam.RobotKind;
 
 /**
- * The behavioral meta level of the {@link EnergySaver}: the paper's battery example (§2.3, §4). It
- * judges the robot's energy events and threshold meta-events with a filter, a JMS selector
- * evaluated by arm-active's {@link Filter} as the kernel's metas do. While the battery is above the
- * threshold its filter takes threshold meta-events only, so it drops every energy event (counted);
- * on the meta-event that the battery fell under the threshold it swaps its filter to take energy
- * events too, and asks the robot to change its stepper for one of the saving gait ({@code
- * changeModule}), once. From the energy events it then takes, it models the draw of the new gait.
+ * The behavioral meta level of the {@link EnergySaver}: the paper's battery example (§2.3, §4), a
+ * behavioral meta-entity of the kernel. Its robot notifies its state every cycle and the threshold
+ * meta-events of its battery ({@link EnergySaver#LOW}, watched by the kernel on the robot's
+ * observed fraction). While the battery is above the threshold this meta's filter, a JMS selector,
+ * takes threshold meta-events only ({@value #THRESHOLDS_ONLY}): every state event is dropped. On
+ * the meta-event that the battery fell under the threshold it changes its filter to take the states
+ * too ({@value #FOLLOWING_ENERGY}) and asks the robot for the stepper of the saving gait ({@code
+ * changeModule}), once; from the states it then takes, it measures the draw of the new gait.
  *
- * <p>Threading: called on the robot's thread at the end of each cycle (a {@link BMetaRobot}).
+ * <p>Threading: runs on its meta-entity's own object, never on the robot's thread, in the robot's
+ * JVM or another. Its figures are read once the run is over.
  */
-final class EnergyMeta implements BMetaRobot {
+final class EnergyMeta extends BMetaRobot {
   static final String THRESHOLDS_ONLY = "kind = 'threshold'";
-  static final String FOLLOWING_ENERGY = "kind = 'threshold' OR kind = 'energy'";
+  static final String FOLLOWING_ENERGY = "kind = 'threshold' OR kind = 'state'";
 
   /** How long the meta watches the saving gait's draw before telling it. */
   private static final double WATCH_SECONDS = 1.0;
 
-  private final int atom;
-  private final Journal journal;
-  private final double periodSeconds;
-  private Filter filter = Filter.selector(THRESHOLDS_ONLY);
-  private long dropped;
-  private long followed;
-  private int switches;
+  private final MetaLevel.MetaNotes notes;
+  private volatile String filter = THRESHOLDS_ONLY;
+  private volatile long followed;
+  private volatile int switches;
   private double followedSince = Double.NaN;
   private double joulesWhenSwitched;
-  private double savingWatts = Double.NaN;
+  private volatile double savingWatts = Double.NaN;
 
-  EnergyMeta(int atom, Journal journal, double periodSeconds) {
-    this.atom = atom;
-    this.journal = requireNonNull(journal, "journal");
-    this.periodSeconds = periodSeconds;
+  EnergyMeta(MetaLevel.MetaNotes notes) {
+    super("bmenergy", Damping.none());
+    this.notes = requireNonNull(notes, "notes");
   }
 
   @Override
-  public void onCycle(CycleReport report, Consumer<Adaptation> requests) {
-    double now = report.nanoTime() / 1e9;
-    for (CycleReport.Emission emission : report.emissions()) {
-      Signal signal = emission.signal();
-      Map<String, Object> properties =
-          switch (signal) {
-            case EnergyLevel level -> level.properties();
-            case EnergyThreshold threshold -> threshold.properties();
-            default -> Map.of();
-          };
-      if (properties.isEmpty()) {
-        continue;
-      }
-      if (!filter.matches(properties)) {
-        dropped++;
-        continue;
-      }
-      switch (signal) {
-        case EnergyThreshold t when t.below() && switches == 0 -> switchToSaving(t, now, requests);
-        case EnergyLevel level -> follow(level, now);
-        default -> {}
-      }
+  public void onNotification(MetaContext context, Notification n) {
+    switch (n) {
+      case ThresholdEvent t when t.below() && switches == 0 -> switchToSaving(context, t);
+      case StateEvent s when switches > 0 -> follow(context, s);
+      default -> {}
     }
   }
 
-  private void switchToSaving(EnergyThreshold t, double now, Consumer<Adaptation> requests) {
-    filter = Filter.selector(FOLLOWING_ENERGY);
-    journal.note(
-        atom,
-        "meta level: threshold meta-event '"
-            + t.name()
-            + "', filter now \""
-            + FOLLOWING_ENERGY
-            + "\" after dropping "
-            + dropped
-            + " energy events");
+  private void switchToSaving(MetaContext context, ThresholdEvent t) {
+    context.setFilter(t.entity(), FOLLOWING_ENERGY);
+    filter = FOLLOWING_ENERGY;
+    String robot = context.entity(t.entity()).name();
+    notes.note(
+        robot,
+        context.nanoTime(),
+        "threshold meta-event '" + t.threshold() + "': filter now \"" + FOLLOWING_ENERGY + "\"");
     EnergyGait saving = EnergyGait.SAVING;
-    requests.accept(
-        new Adaptation.ChangeModule(new Stepper(EnergyRobot.STEPPER, saving, periodSeconds)));
-    switches++;
-    followedSince = now;
-    journal.adaptation(
-        atom,
+    String why =
         String.format(
             Locale.ROOT,
-            "switched to saving gait (stroke %.2f rad, %.1f Hz, torque limit %.2f N·m)",
+            "battery at %.0f%%: saving gait (stroke %.2f rad, %.1f Hz, torque limit %.2f N·m)",
+            100 * t.value(),
             saving.stroke(),
             saving.frequency(),
-            saving.torqueLimit()),
-        String.format(Locale.ROOT, "battery at %.0f%%", 100 * t.fraction()));
-  }
-
-  private void follow(EnergyLevel level, double now) {
-    followed++;
-    if (followed == 1) {
-      joulesWhenSwitched = level.joules();
-    } else if (Double.isNaN(savingWatts) && now - followedSince >= WATCH_SECONDS) {
-      savingWatts = (joulesWhenSwitched - level.joules()) / (now - followedSince);
-      journal.note(
-          atom,
-          String.format(
-              Locale.ROOT,
-              "meta level: the saving gait draws %.2f W, %.2f J left: about %.0f s more",
-              savingWatts,
-              level.joules(),
-              savingWatts > 0 ? level.joules() / savingWatts : Double.POSITIVE_INFINITY));
+            saving.torqueLimit());
+    var request =
+        RobotKind.because(
+            why,
+            RobotKind.changeModule(EnergyRobot.STEPPER, Map.of(EnergyRobot.GAIT, saving.name())));
+    if (context.adapt(t.entity(), request).isPresent()) {
+      switches++;
+      followedSince = context.nanoTime() / 1e9;
     }
   }
 
-  /** Energy events the filter dropped (all of them while the battery was above the threshold). */
-  long dropped() {
-    return dropped;
+  private void follow(MetaContext context, StateEvent s) {
+    if (!(s.observation().get(EnergyRobot.JOULES) instanceof Double joules)) {
+      return;
+    }
+    double now = context.nanoTime() / 1e9;
+    followed++;
+    if (followed == 1) {
+      joulesWhenSwitched = joules;
+    } else if (Double.isNaN(savingWatts) && now - followedSince >= WATCH_SECONDS) {
+      savingWatts = (joulesWhenSwitched - joules) / (now - followedSince);
+      notes.note(
+          context.entity(s.entity()).name(),
+          context.nanoTime(),
+          String.format(
+              Locale.ROOT,
+              "the saving gait draws %.2f W, %.2f J left: about %.0f s more",
+              savingWatts,
+              joules,
+              savingWatts > 0 ? joules / savingWatts : Double.POSITIVE_INFINITY));
+    }
   }
 
-  /** Energy events the filter let through, after the threshold meta-event. */
+  /** States the filter let through, after the threshold. */
   long followed() {
     return followed;
   }
@@ -141,7 +120,7 @@ final class EnergyMeta implements BMetaRobot {
   }
 
   /** The filter now. */
-  Filter filter() {
+  String filter() {
     return filter;
   }
 }

@@ -4,15 +4,12 @@ import static java.util.Objects.requireNonNull;
 import static org.armgals.examples.robots.EnergySignals.LEVEL;
 import static org.armgals.examples.robots.EnergySignals.POSE;
 import static org.armgals.examples.robots.EnergySignals.STRIDE;
-import static org.armgals.examples.robots.EnergySignals.THRESHOLD;
 
 import java.util.ArrayList;
 import java.util.List;
 import org.armgals.examples.robots.EnergySignals.EnergyLevel;
-import org.armgals.examples.robots.EnergySignals.EnergyThreshold;
 import org.armgals.examples.robots.EnergySignals.LegPose;
 import org.armgals.examples.robots.EnergySignals.Stride;
-import org.armgals.kernel.Threshold;
 import org.armgals.maam.Actuator;
 import org.armgals.maam.Inputs;
 import org.armgals.maam.Outputs;
@@ -147,19 +144,15 @@ final class EnergyModules {
   }
 
   /**
-   * Perceptor: the battery. Every cycle it emits an energy event; when the level crosses the
-   * threshold's band it also emits a threshold meta-event, as a kernel entity watching a {@link
-   * Threshold} does (below under {@code low}, above again over {@code high}, nothing in between).
+   * Perceptor: the battery. Every cycle it emits an energy event, the level left; the robot shows
+   * it to its meta level ({@link EnergyRobot#observe()}), whose kernel watches the threshold.
    */
   static final class Battery implements Perceptor {
     private final String name;
     private final double capacity;
-    private final Threshold threshold;
-    private boolean below;
 
-    Battery(String name, double capacity, Threshold threshold) {
+    Battery(String name, double capacity) {
       this.name = requireNonNull(name, "name");
-      this.threshold = requireNonNull(threshold, "threshold");
       if (!(capacity > 0)) {
         throw new IllegalArgumentException("capacity " + capacity + " J: expected > 0");
       }
@@ -173,18 +166,13 @@ final class EnergyModules {
 
     @Override
     public List<Port<?>> outputs() {
-      return List.of(LEVEL, THRESHOLD);
+      return List.of(LEVEL);
     }
 
     @Override
     public void perceive(Body body, Outputs out) {
       double joules = body.read(Atom.BATTERY);
-      double fraction = joules / capacity;
-      out.emit(LEVEL, new EnergyLevel(joules, fraction));
-      if (!below && fraction < threshold.low() || below && fraction > threshold.high()) {
-        below = !below;
-        out.emit(THRESHOLD, new EnergyThreshold(threshold.name(), below, fraction));
-      }
+      out.emit(LEVEL, new EnergyLevel(joules, joules / capacity));
     }
   }
 }

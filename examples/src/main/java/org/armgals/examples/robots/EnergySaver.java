@@ -3,24 +3,38 @@ package org.armgals.examples.robots;
 import static java.util.Objects.requireNonNull;
 
 import java.time.Duration;
+import java.util.List;
 import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
 import org.armgals.examples.cli.RunSettings;
+import org.armgals.examples.cli.Summary;
 import org.armgals.examples.sim.Crew;
 import org.armgals.examples.sim.Journal;
+import org.armgals.examples.sim.MetaLevel;
+import org.armgals.examples.sim.Reflection;
 import org.armgals.examples.sim.SimExample;
+import org.armgals.gals.Island;
+import org.armgals.kernel.AdaptationPoint;
+import org.armgals.kernel.Kernel;
+import org.armgals.kernel.NotificationPolicy;
+import org.armgals.kernel.StructuralMeta;
 import org.armgals.kernel.Threshold;
 import org.armgals.maam.sim.Scene;
 import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;
+import org.armgals.representation.p.PState;
+import org.jspecify.annotations.Nullable;
 
 /**
  * {@code energy}: the paper's battery example on a moving atom (§2.3, §4, §5.4). A lone atom,
- * standing as a tripod, walks with a fast gait that drains its small battery. Its behavioral meta
- * level ({@link EnergyMeta}, a framework {@code BMetaRobot} judging notifications with the kernel's
- * selector filters) drops the robot's energy events while the battery is above 30%; on the
- * threshold meta-event it subscribes to them (its filter changes at run time) and adapts the robot
- * to a saving gait, with smaller strokes and a lower torque limit, by a {@code changeModule}
- * request. It lasts longer than the same robot without its meta level ({@link #withoutMetaLevel}).
+ * standing as a tripod, walks with a fast gait that drains its small battery. The robot is a kernel
+ * entity whose kernel watches the threshold {@link #LOW} on its observed battery; its behavioral
+ * meta-entity ({@link EnergyMeta}, in the robot's JVM or another) hears only threshold meta-events
+ * while the battery is above 30% (its filter, a JMS selector, drops every state); on the threshold
+ * meta-event it takes the states too (its filter changes at run time) and adapts the robot to a
+ * saving gait, with smaller strokes and a lower torque limit, by a {@code changeModule} request. It
+ * lasts longer than the same robot without its meta level ({@link #withoutMetaLevel}).
  *
  * <p>Stateless: each {@link #start} makes a new robot and meta level.
  */
@@ -96,6 +110,51 @@ public final class EnergySaver implements SimExample {
     return Duration.ofSeconds(30);
   }
 
+  /** Its meta level, unless made {@link #withoutMetaLevel}. */
+  @Override
+  public Optional<MetaLevel> metaLevel(RunSettings settings) {
+    return metaLevel ? Optional.of(new Level()) : Optional.empty();
+  }
+
+  /** The energy robot's meta level: the same code in the robot's JVM or another. */
+  static final class Level implements MetaLevel {
+    private @Nullable EnergyMeta meta;
+
+    @Override
+    public Map<String, StructuralMeta<PState>> kinds(Kernel kernel) {
+      return Map.of(ROBOT, EnergyRobot.kind(kernel));
+    }
+
+    @Override
+    public List<Watch> watches(MetaNotes notes) {
+      EnergyMeta m = new EnergyMeta(notes);
+      meta = m;
+      return List.of(new Watch(m, List.of(ROBOT), EnergyMeta.THRESHOLDS_ONLY));
+    }
+
+    @Override
+    public List<Summary.Entry> figures() {
+      EnergyMeta m = requireNonNull(meta, "meta");
+      return List.of(
+          new Summary.Entry("gait switches asked for", Integer.toString(m.switches())),
+          new Summary.Entry("states followed after the threshold", Long.toString(m.followed())),
+          new Summary.Entry(
+              "saving gait's draw, as the meta measured it",
+              Double.isNaN(m.savingWatts())
+                  ? "not measured"
+                  : String.format(Locale.ROOT, "%.2f W", m.savingWatts())),
+          new Summary.Entry("meta's filter at the end", m.filter()));
+    }
+
+    /** The meta-entity of the local run; null before {@link #watches}. */
+    @Nullable EnergyMeta meta() {
+      return meta;
+    }
+  }
+
+  /** The energy robot's name, its kernel entity's. */
+  static final String ROBOT = "energy";
+
   @Override
   public Crew start(Simulation sim, RunSettings settings, Journal journal) {
     return begin(sim, settings, journal);
@@ -104,18 +163,22 @@ public final class EnergySaver implements SimExample {
   /** {@link #start}, answering the crew with what a test looks at. */
   EnergyCrew begin(Simulation sim, RunSettings settings, Journal journal) {
     requireNonNull(sim, "sim");
+    requireNonNull(settings, "settings");
     requireNonNull(journal, "journal");
     double period = settings.period().toNanos() / 1e9;
-    EnergyRobot robot;
-    EnergyMeta meta = null;
-    if (metaLevel) {
-      meta = new EnergyMeta(ATOM, journal, period);
-      robot = new EnergyRobot(sim.body(ATOM), sim::timeNanos, period, capacity, LOW, meta);
-    } else {
-      robot = new EnergyRobot(sim.body(ATOM), sim::timeNanos, period, capacity, LOW);
+    EnergyRobot robot = new EnergyRobot(sim.body(ATOM), sim::timeNanos, period, capacity);
+    Level level = metaLevel ? new Level() : null;
+    Reflection reflection = Reflection.open(sim, settings, name(), level, journal);
+    try {
+      Island island = reflection.island(ROBOT, AdaptationPoint.END_OF_CYCLE);
+      reflection.start(robot, ATOM, island, NotificationPolicy.statesOnly().watching(LOW));
+      EnergyCrew crew = new EnergyCrew(sim, robot, level, reflection, capacity);
+      sim.setController(ATOM, (atom, cycle) -> crew.cycle(island));
+      reflection.ready();
+      return crew;
+    } catch (RuntimeException | Error e) {
+      reflection.close();
+      throw e;
     }
-    EnergyCrew crew = new EnergyCrew(sim, robot, meta, capacity);
-    sim.setController(ATOM, (atom, cycle) -> crew.cycle());
-    return crew;
   }
 }

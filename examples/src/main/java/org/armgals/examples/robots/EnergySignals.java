@@ -1,7 +1,6 @@
 package org.armgals.examples.robots;
 
 import java.util.List;
-import java.util.Map;
 import org.armgals.maam.Port;
 import org.armgals.maam.Signal;
 import org.armgals.maam.spi.LegAngles;
@@ -31,31 +30,9 @@ final class EnergySignals {
    * @param joules energy left
    * @param fraction of a full battery
    */
-  record EnergyLevel(double joules, double fraction) implements Signal {
-
-    /** What a meta-level filter sees of it. */
-    Map<String, Object> properties() {
-      return Map.of("kind", "energy", "joules", joules, "fraction", fraction);
-    }
-  }
-
-  /**
-   * A threshold meta-event (paper §2.3): the battery crossed a threshold's band.
-   *
-   * @param name the threshold's
-   * @param below true when it fell under the band, false when it rose over it
-   * @param fraction of a full battery, when it crossed
-   */
-  record EnergyThreshold(String name, boolean below, double fraction) implements Signal {
-
-    /** What a meta-level filter sees of it. */
-    Map<String, Object> properties() {
-      return Map.of("kind", "threshold", "name", name, "below", below, "fraction", fraction);
-    }
-  }
+  record EnergyLevel(double joules, double fraction) implements Signal {}
 
   static final Port<LegPose> POSE = Port.of("pose", LegPose.class);
   static final Port<Stride> STRIDE = Port.of("stride", Stride.class);
   static final Port<EnergyLevel> LEVEL = Port.of("level", EnergyLevel.class);
-  static final Port<EnergyThreshold> THRESHOLD = Port.of("threshold", EnergyThreshold.class);
 }

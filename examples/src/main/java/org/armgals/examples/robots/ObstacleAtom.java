@@ -7,6 +7,7 @@ import static org.armgals.examples.robots.ObstacleModules.TICK;
 
 import java.time.Duration;
 import java.util.List;
+import java.util.Map;
 import org.armgals.active.TimeSource;
 import org.armgals.examples.robots.ObstacleModules.Carry;
 import org.armgals.examples.robots.ObstacleModules.Climb;
@@ -16,19 +17,23 @@ import org.armgals.examples.robots.ObstacleModules.Feeler;
 import org.armgals.examples.robots.ObstacleModules.Feet;
 import org.armgals.examples.robots.ObstacleModules.Metronome;
 import org.armgals.examples.robots.ObstacleModules.Odometry;
+import org.armgals.kernel.Kernel;
+import org.armgals.kernel.StructuralMeta;
 import org.armgals.maam.AbstractRobot;
-import org.armgals.maam.Adaptation;
-import org.armgals.maam.BMetaRobot;
 import org.armgals.maam.Derivator;
+import org.armgals.maam.Emission;
 import org.armgals.maam.PortRef;
+import org.armgals.maam.RobotKind;
 import org.armgals.maam.Schema;
 import org.armgals.maam.Suppressor;
 import org.armgals.maam.spi.Body;
+import org.armgals.representation.p.PState;
 
 /**
  * The robot of one atom of {@link ObstacleRobot}'s chain. Every atom runs {@value #CRUISE}; the
  * front atom also runs the {@value #CLIMB} reflex, whose careful stride suppresses cruise's while
- * its feeler sees the step. The meta level may add {@value #LIFT_FRONT} ({@link #liftFront}).
+ * its feeler sees the step. The meta level may add {@value #LIFT_FRONT} and its connectors from the
+ * atoms' kind ({@link #kind}).
  *
  * <pre>{@code
  * cruise:     metronome --tick--> cruise --stride--(S)--> feet      odometry --position-->
@@ -54,9 +59,8 @@ final class ObstacleAtom extends AbstractRobot {
 
   /**
    * @param index the atom's place in the chain, 0 at the rear; the last one is the front
-   * @param behavioralMeta its meta level, or null for none
    */
-  ObstacleAtom(int index, Body body, TimeSource time, long periodNanos, BMetaRobot behavioralMeta) {
+  ObstacleAtom(int index, Body body, TimeSource time, long periodNanos) {
     super("atom-" + index, body, time);
     this.index = index;
     this.periodNanos = periodNanos;
@@ -86,9 +90,6 @@ final class ObstacleAtom extends AbstractRobot {
       addConnector(
           new Suppressor(PortRef.of(climb, STRIDE), PortRef.of(cruise, STRIDE), CLIMB_HOLD));
     }
-    if (behavioralMeta != null) {
-      setBehavioralMeta(behavioralMeta);
-    }
   }
 
   /** Neighbouring atoms are half a gait period apart: three feet down, three up. */
@@ -96,19 +97,57 @@ final class ObstacleAtom extends AbstractRobot {
     return index % 2 == 0 ? 0 : Math.PI;
   }
 
+  /** The observed position of the atom along the path, metres (its odometry's). */
+  static final String X = "x";
+
+  /** The edge of the step in a request for {@value #LIFT_FRONT}, metres along the path. */
+  static final String EDGE = "edge";
+
+  /** The connectors that join {@value #LIFT_FRONT} to the atom's program, by catalog name. */
+  static final List<String> LIFT_FRONT_CONNECTORS =
+      List.of("lift-front-position", "lift-front-tick", "lift-front-suppresses-cruise");
+
   /**
-   * The adaptations that add the lift-front schema for a step whose edge is at {@code edge} (m):
-   * the schema, the derivators that feed it, and its suppressor of cruise's stride.
+   * The kind of the chain's atoms, {@code ObstacleAtom}: they observe their position; its catalog
+   * has the {@value #LIFT_FRONT} schema for a step whose {@value #EDGE} is given, and the three
+   * connectors that feed it and let it suppress cruise's stride ({@link #LIFT_FRONT_CONNECTORS}).
    */
-  List<Adaptation> liftFront(double edge) {
-    Carry carry = new Carry("carry", index, edge, periodNanos);
-    return List.of(
-        new Adaptation.AddSchema(Schema.builder(LIFT_FRONT).add(carry).build()),
-        new Adaptation.AddConnector(
-            new Derivator(PortRef.of(odometry, POSITION), PortRef.of(carry, POSITION))),
-        new Adaptation.AddConnector(
-            new Derivator(PortRef.of(metronome, TICK), PortRef.of(carry, TICK))),
-        new Adaptation.AddConnector(
-            new Suppressor(PortRef.of(carry, STRIDE), PortRef.of(cruise, STRIDE), Duration.ZERO)));
+  static StructuralMeta<PState> kind(Kernel kernel) {
+    return RobotKind.builder("ObstacleAtom", ObstacleAtom.class)
+        .observing(Map.of(X, 0.0))
+        .schema(
+            LIFT_FRONT,
+            (atom, p) ->
+                Schema.builder(LIFT_FRONT)
+                    .add(new Carry("carry", atom.index, p.number(EDGE), atom.periodNanos))
+                    .build())
+        .connector(
+            LIFT_FRONT_CONNECTORS.get(0),
+            (atom, p) ->
+                new Derivator(PortRef.of(atom.odometry, POSITION), new PortRef("carry", POSITION)))
+        .connector(
+            LIFT_FRONT_CONNECTORS.get(1),
+            (atom, p) ->
+                new Derivator(PortRef.of(atom.metronome, TICK), new PortRef("carry", TICK)))
+        .connector(
+            LIFT_FRONT_CONNECTORS.get(2),
+            (atom, p) ->
+                new Suppressor(
+                    new PortRef("carry", STRIDE), PortRef.of(atom.cruise, STRIDE), Duration.ZERO))
+        .define(kernel);
+  }
+
+  /** What an atom shows its meta level: the robot's own, and where its odometry puts it. */
+  @Override
+  protected Map<String, Object> observe() {
+    Map<String, Object> m = super.observe();
+    double x = 0;
+    for (Emission e : emissions()) {
+      if (e.signal() instanceof ObstacleSignals.Position p) {
+        x = p.x();
+      }
+    }
+    m.put(X, x);
+    return m;
   }
 }

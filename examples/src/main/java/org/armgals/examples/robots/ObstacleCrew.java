@@ -4,29 +4,35 @@ import java.util.List;
 import java.util.Locale;
 import org.armgals.examples.cli.Summary;
 import org.armgals.examples.sim.Crew;
+import org.armgals.examples.sim.Reflection;
 import org.armgals.maam.Schema;
 import org.armgals.maam.sim.Simulation;
 
-/** One run of {@link ObstacleRobot}: the chain's robots and its meta level, if any. */
+/** One run of {@link ObstacleRobot}: the chain's robots and their reflective side. */
 final class ObstacleCrew implements Crew {
   private final Simulation sim;
   private final List<ObstacleAtom> robots;
-  private final ObstacleMeta meta;
+  private final Reflection reflection;
 
-  ObstacleCrew(Simulation sim, List<ObstacleAtom> robots, ObstacleMeta meta) {
+  ObstacleCrew(Simulation sim, List<ObstacleAtom> robots, Reflection reflection) {
     this.sim = sim;
     this.robots = List.copyOf(robots);
-    this.meta = meta;
+    this.reflection = reflection;
+  }
+
+  @Override
+  public java.util.Optional<Reflection> reflection() {
+    return java.util.Optional.of(reflection);
+  }
+
+  @Override
+  public void close() {
+    reflection.close();
   }
 
   /** The robots, rear first. */
   List<ObstacleAtom> robots() {
     return robots;
-  }
-
-  /** The meta level. */
-  ObstacleMeta meta() {
-    return meta;
   }
 
   /** Where the molecule's centre is along the path now (m): the mean of its kernels. */

@@ -1,69 +1,64 @@
 package org.armgals.examples.robots;
 
-import static java.util.Objects.requireNonNull;
-
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.function.Consumer;
-import org.armgals.examples.robots.ObstacleSignals.Position;
-import org.armgals.examples.sim.Journal;
-import org.armgals.maam.Adaptation;
+import java.util.Map;
+import org.armgals.kernel.Damping;
+import org.armgals.kernel.Entity;
+import org.armgals.kernel.Notification;
+import org.armgals.kernel.spi.MetaContext;
 import org.armgals.maam.BMetaRobot;
-import org.armgals.maam.CycleReport;
+import org.armgals.maam.RobotKind;
 
 /**
- * The behavioral meta level of {@link ObstacleRobot}'s chain, notified by the front atom's robot:
- * its model is the front atom's progress over a sliding window (from the odometry signals in the
- * cycle reports). When the chain has gained less than {@value #MIN_GAIN} m for {@value
- * #WINDOW_SECONDS} s (pushing against the step, the climb reflex looping without gain), it locates
- * the step's edge just ahead of the front atom and adds the lift-front schema to every atom's
- * robot, once, telling the journal what and why.
+ * The behavioral meta level of {@link ObstacleRobot}'s chain, a behavioral meta-entity of the
+ * kernel taking every atom, notified by the front atom's states: its model is the front atom's
+ * progress over a sliding window. When the chain has gained less than {@value #MIN_GAIN} m for
+ * {@value #WINDOW_SECONDS} s (pushing against the step, the climb reflex looping without gain), it
+ * locates the step's edge just ahead of the front atom and asks every atom to add the lift-front
+ * schema from their kind's catalog, with its connectors, once, saying why.
+ *
+ * <p>Threading: runs on its meta-entity's own object, never on an atom's thread, in the chain's JVM
+ * or another.
  */
-final class ObstacleMeta implements BMetaRobot {
+final class ObstacleMeta extends BMetaRobot {
   static final double WINDOW_SECONDS = 2.0;
   static final double MIN_GAIN = 0.02;
 
   /** From the front kernel's centre to the step's face when the chain stalls (m). */
   static final double EDGE_AHEAD = 0.005;
 
-  private final Journal journal;
-  private final List<ObstacleAtom> robots = new ArrayList<>();
-  private final List<Integer> atomIds = new ArrayList<>();
+  private final String front;
   private long windowStart = -1;
   private double windowX;
-  private boolean adapted;
+  private volatile boolean adapted;
 
-  ObstacleMeta(Journal journal) {
-    this.journal = requireNonNull(journal, "journal");
+  /**
+   * @param front the name of the front atom's robot, whose progress it watches
+   */
+  ObstacleMeta(String front) {
+    super("bmchain", Damping.none());
+    this.front = front;
   }
 
-  /** Adds the robot of the next atom of the chain, rear first; the last is the front. */
-  void watch(int atomId, ObstacleAtom robot) {
-    atomIds.add(atomId);
-    robots.add(requireNonNull(robot, "robot"));
-  }
-
-  /** Whether it has added the lift-front schema. */
+  /** Whether it has asked for the lift-front schema. */
   boolean adapted() {
     return adapted;
   }
 
   @Override
-  public void onCycle(CycleReport report, Consumer<Adaptation> requests) {
-    Position position = null;
-    for (CycleReport.Emission e : report.emissions()) {
-      if (e.signal() instanceof Position p) {
-        position = p;
-      }
-    }
-    if (position == null || adapted) {
+  public void onNotification(MetaContext context, Notification n) {
+    if (adapted || !context.entity(n.entity()).name().equals(front)) {
       return;
     }
-    long now = report.nanoTime();
-    if (windowStart < 0 || position.x() - windowX > MIN_GAIN) {
+    Map<String, Object> seen = observation(n).orElse(Map.of());
+    if (!(seen.get(ObstacleAtom.X) instanceof Double x)) {
+      return;
+    }
+    long now = context.nanoTime();
+    if (windowStart < 0 || x - windowX > MIN_GAIN) {
       windowStart = now;
-      windowX = position.x();
+      windowX = x;
       return;
     }
     double stalled = (now - windowStart) / 1e9;
@@ -71,25 +66,28 @@ final class ObstacleMeta implements BMetaRobot {
       return;
     }
     adapted = true;
-    double edge = position.x() + EDGE_AHEAD;
+    double edge = x + EDGE_AHEAD;
     String why =
         String.format(
             Locale.ROOT,
             "no progress for %.1f s (gained %.1f cm): a step at x = %.2f m",
             stalled,
-            100 * (position.x() - windowX),
+            100 * (x - windowX),
             edge);
-    ObstacleAtom front = robots.get(robots.size() - 1);
-    for (int i = 0; i < robots.size(); i++) {
-      ObstacleAtom robot = robots.get(i);
-      for (Adaptation a : robot.liftFront(edge)) {
-        if (robot == front) {
-          requests.accept(a);
-        } else {
-          robot.request(a);
-        }
+    for (Entity atom : context.self().baseLevelEntities()) {
+      context.adapt(
+          atom.address(),
+          RobotKind.because(
+              why, RobotKind.addSchema(ObstacleAtom.LIFT_FRONT, Map.of(ObstacleAtom.EDGE, edge))));
+      for (String connector : ObstacleAtom.LIFT_FRONT_CONNECTORS) {
+        context.adapt(
+            atom.address(), RobotKind.because(why, RobotKind.addConnector(connector, Map.of())));
       }
-      journal.adaptation(atomIds.get(i), "added schema " + ObstacleAtom.LIFT_FRONT, why);
     }
+  }
+
+  /** The names of the atoms' robots, rear first, that it takes. */
+  static List<String> robots(int atoms) {
+    return java.util.stream.IntStream.range(0, atoms).mapToObj(i -> "atom-" + i).toList();
   }
 }

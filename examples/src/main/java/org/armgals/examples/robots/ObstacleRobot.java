@@ -4,15 +4,28 @@ import static java.util.Objects.requireNonNull;
 
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
 import org.armgals.examples.cli.RunSettings;
+import org.armgals.examples.cli.Summary;
 import org.armgals.examples.sim.Crew;
 import org.armgals.examples.sim.Journal;
+import org.armgals.examples.sim.MetaLevel;
+import org.armgals.examples.sim.Reflection;
 import org.armgals.examples.sim.SimExample;
+import org.armgals.gals.Island;
+import org.armgals.kernel.AdaptationPoint;
+import org.armgals.kernel.Kernel;
+import org.armgals.kernel.NotificationPolicy;
+import org.armgals.kernel.StructuralMeta;
 import org.armgals.maam.sim.Scene;
 import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;
+import org.armgals.representation.p.PState;
+import org.jspecify.annotations.Nullable;
 
 /**
  * {@code obstacle}: a chain of three atoms crawls into a low step, and its meta level gets it over.
@@ -21,11 +34,12 @@ import org.armgals.maam.sim.Simulation;
  * alternating-tripod crawl) and, on the front atom, a {@code climb} reflex whose careful stride
  * suppresses cruise's while its feeler leg sees the step: subsumption (paper §5). The careful
  * stride is not enough: the feet drag against the step's face and the chain pushes without gain.
- * The behavioral meta level ({@link ObstacleMeta}, a {@code BMetaRobot}) watches the front atom's
- * progress in the cycle reports, notices the loop (no progress for two seconds), and adds a {@code
- * lift-front} schema to every atom's robot at its adaptation point: the atom at the step's edge
- * swings its feet up and is carried over by its neighbours, the others keep crawling. Each
- * adaptation is told to the journal, so it shows in the trace, the time line and the summary.
+ * The behavioral meta level ({@link ObstacleMeta}, a behavioral meta-entity taking every atom's
+ * robot, in their JVM or another) watches the front atom's progress in its states, notices the loop
+ * (no progress for two seconds), and asks every atom for a {@code lift-front} schema of their
+ * kind's catalog, applied at their adaptation points: the atom at the step's edge swings its feet
+ * up and is carried over by its neighbours, the others keep crawling. Each adaptation is told to
+ * the journal, so it shows in the trace, the time line and the summary.
  */
 public final class ObstacleRobot implements SimExample {
 
@@ -62,26 +76,71 @@ public final class ObstacleRobot implements SimExample {
     return start(sim, settings, journal, true);
   }
 
+  /** Its meta level: {@code bmchain} ({@link ObstacleMeta}) takes every atom. */
+  @Override
+  public Optional<MetaLevel> metaLevel(RunSettings settings) {
+    return Optional.of(new Level());
+  }
+
+  /** The chain's meta level: the same code in the robots' JVM or another. */
+  static final class Level implements MetaLevel {
+    private @Nullable ObstacleMeta meta;
+
+    @Override
+    public Map<String, StructuralMeta<PState>> kinds(Kernel kernel) {
+      StructuralMeta<PState> kind = ObstacleAtom.kind(kernel);
+      Map<String, StructuralMeta<PState>> kinds = new LinkedHashMap<>();
+      ObstacleMeta.robots(ObstacleGait.ATOMS).forEach(robot -> kinds.put(robot, kind));
+      return kinds;
+    }
+
+    @Override
+    public List<Watch> watches(MetaNotes notes) {
+      List<String> robots = ObstacleMeta.robots(ObstacleGait.ATOMS);
+      ObstacleMeta m = new ObstacleMeta(robots.get(robots.size() - 1));
+      meta = m;
+      return List.of(new Watch(m, robots, ""));
+    }
+
+    @Override
+    public List<Summary.Entry> figures() {
+      return List.of(
+          new Summary.Entry(
+              "lift-front asked for", Boolean.toString(requireNonNull(meta, "meta").adapted())));
+    }
+  }
+
   /** Starts the chain's robots, with or without their meta level (to compare). */
   ObstacleCrew start(Simulation sim, RunSettings settings, Journal journal, boolean withMeta) {
     requireNonNull(sim, "sim");
     requireNonNull(settings, "settings");
     requireNonNull(journal, "journal");
-    ObstacleMeta meta = new ObstacleMeta(journal);
     List<Integer> ids = sim.atomIds();
     List<ObstacleAtom> robots = new ArrayList<>();
     long period = settings.period().toNanos();
-    for (int i = 0; i < ids.size(); i++) {
-      int id = ids.get(i);
-      boolean front = i == ids.size() - 1;
-      ObstacleAtom robot =
-          new ObstacleAtom(
-              i, TrackedBody.of(sim, id), sim::timeNanos, period, front && withMeta ? meta : null);
-      meta.watch(id, robot);
-      robots.add(robot);
-      sim.setController(id, (body, cycle) -> robot.cycle());
+    Reflection reflection =
+        Reflection.open(
+            sim, settings, name(), withMeta ? metaLevel(settings).orElseThrow() : null, journal);
+    try {
+      for (int i = 0; i < ids.size(); i++) {
+        int id = ids.get(i);
+        boolean front = i == ids.size() - 1;
+        ObstacleAtom robot = new ObstacleAtom(i, TrackedBody.of(sim, id), sim::timeNanos, period);
+        Island island = reflection.island(robot.name(), AdaptationPoint.END_OF_CYCLE);
+        reflection.start(
+            robot,
+            id,
+            island,
+            front ? NotificationPolicy.statesOnly() : NotificationPolicy.quiet());
+        robots.add(robot);
+        sim.setController(id, (body, cycle) -> reflection.step(island));
+      }
+      reflection.ready();
+      return new ObstacleCrew(sim, robots, reflection);
+    } catch (RuntimeException | Error e) {
+      reflection.close();
+      throw e;
     }
-    return new ObstacleCrew(sim, robots, meta);
   }
 
   /** The chain, along x, turned 45° about x so each atom stands on two feet; the step ahead. */

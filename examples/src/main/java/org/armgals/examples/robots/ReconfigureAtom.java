@@ -4,8 +4,8 @@ import static org.armgals.examples.robots.ReconfigureModules.BEAT;
 import static org.armgals.examples.robots.ReconfigureModules.HEARD;
 import static org.armgals.examples.robots.ReconfigureModules.STRIDE;
 
-import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import org.armgals.active.TimeSource;
 import org.armgals.examples.robots.ObstacleModules.Feet;
 import org.armgals.examples.robots.ReconfigureModules.Chain;
@@ -16,16 +16,22 @@ import org.armgals.examples.robots.ReconfigureModules.Listen;
 import org.armgals.examples.robots.ReconfigureModules.Pacemaker;
 import org.armgals.examples.robots.ReconfigureModules.Relay;
 import org.armgals.examples.robots.ReconfigureModules.Survey;
+import org.armgals.examples.robots.ReconfigureSignals.Beat;
+import org.armgals.examples.robots.ReconfigureSignals.Bonds;
+import org.armgals.examples.robots.ReconfigureSignals.Walls;
+import org.armgals.kernel.Kernel;
+import org.armgals.kernel.StructuralMeta;
 import org.armgals.maam.AbstractRobot;
-import org.armgals.maam.Adaptation;
-import org.armgals.maam.BMetaRobot;
 import org.armgals.maam.BehaviorModule;
 import org.armgals.maam.Connector;
 import org.armgals.maam.Derivator;
+import org.armgals.maam.Emission;
 import org.armgals.maam.PortRef;
+import org.armgals.maam.RobotKind;
 import org.armgals.maam.Schema;
 import org.armgals.maam.spi.Body;
 import org.armgals.maam.spi.Leg;
+import org.armgals.representation.p.PState;
 
 /**
  * The robot of one atom of {@link Reconfigure}'s chain. Its schemas follow its place in the
@@ -41,8 +47,9 @@ import org.armgals.maam.spi.Leg;
  * detach:  detach (releases one chain bond)                  (added by the meta level)
  * }</pre>
  *
- * The meta level changes these with the body's shape: {@link #detach}, then {@link #becomeHead} or
- * {@link #becomeTail}.
+ * The meta level changes these with the body's shape, by requests naming the parts of the atoms'
+ * kind ({@link #kind}): {@value #DETACH}, then a new head's {@value #PACE} or a tail without
+ * {@value #RELAY}.
  */
 final class ReconfigureAtom extends AbstractRobot {
   static final String CRAWL = "crawl";
@@ -77,7 +84,7 @@ final class ReconfigureAtom extends AbstractRobot {
       addSchema(Schema.builder(RELAY).add(relay).build());
     }
     if (head) {
-      Pacemaker pacemaker = new Pacemaker("pacemaker", periodNanos, 0, 0);
+      Pacemaker pacemaker = new Pacemaker(PACEMAKER, periodNanos, 0, 0);
       addSchema(Schema.builder(PACE).add(pacemaker).build());
       beatFrom(pacemaker, !tail).forEach(this::addConnector);
       addSchema(Schema.builder(SURVEY).add(new Survey("survey")).build());
@@ -94,34 +101,101 @@ final class ReconfigureAtom extends AbstractRobot {
     }
   }
 
-  /** Lets {@code meta} watch and adapt this atom's robot. */
-  void watchedBy(BMetaRobot meta) {
-    setBehavioralMeta(meta);
-  }
+  /** Observed: the atom ahead is bound to it. */
+  static final String BOND_AHEAD = "bondAhead";
 
-  /** The adaptation that adds the {@value #DETACH} schema, releasing the bond on {@code leg}. */
-  Adaptation detach(Leg leg) {
-    return new Adaptation.AddSchema(Schema.builder(DETACH).add(new Detach("detach", leg)).build());
-  }
+  /** Observed: the atom behind is bound to it. */
+  static final String BOND_BEHIND = "bondBehind";
+
+  /** Observed: the phase of the beat it crawls to, -1 with none. */
+  static final String PHASE = "phase";
+
+  /** Observed: how near a wall its left side leg sees, metres; -1 with none. */
+  static final String WALL_LEFT = "wallLeft";
+
+  /** Observed: how near a wall its right side leg sees, metres; -1 with none. */
+  static final String WALL_RIGHT = "wallRight";
+
+  /** The leg of a bond, {@code PX} or {@code MX}, in a request for {@value #DETACH}. */
+  static final String LEG = "leg";
+
+  /** The connectors that feed a new head's beat to its crawl and its relay. */
+  static final List<String> PACE_CONNECTORS = List.of("pace-to-crawl", "pace-to-relay");
 
   /**
-   * The adaptations that make a follower the head of a molecule of its own: its {@value #FOLLOW}
-   * schema gives way to {@value #PACE}, whose pacemaker goes on from {@code phase} at full stride;
-   * the {@value #DETACH} schema goes.
+   * The kind of the chain's atoms, {@code ReconfigureAtom}: they observe their bonds, their beat
+   * and the walls they see; its catalog has {@value #DETACH} (releasing the bond of a {@value
+   * #LEG}), {@value #PACE} (a pacemaker going on from a {@value #PHASE} at full stride) and the
+   * connectors that feed its beat ({@link #PACE_CONNECTORS}).
    */
-  List<Adaptation> becomeHead(double phase) {
-    Pacemaker pacemaker = new Pacemaker("pacemaker", periodNanos, phase, 1);
-    List<Adaptation> all = new ArrayList<>();
-    all.add(new Adaptation.RemoveSchema(DETACH));
-    all.add(new Adaptation.RemoveSchema(FOLLOW));
-    all.add(new Adaptation.AddSchema(Schema.builder(PACE).add(pacemaker).build()));
-    beatFrom(pacemaker, true).forEach(c -> all.add(new Adaptation.AddConnector(c)));
-    return all;
+  static StructuralMeta<PState> kind(Kernel kernel) {
+    return RobotKind.builder("ReconfigureAtom", ReconfigureAtom.class)
+        .observing(
+            Map.of(
+                BOND_AHEAD, false,
+                BOND_BEHIND, false,
+                PHASE, -1.0,
+                WALL_LEFT, -1.0,
+                WALL_RIGHT, -1.0))
+        .schema(
+            DETACH,
+            (atom, p) -> Schema.builder(DETACH).add(new Detach("detach", leg(p.text(LEG)))).build())
+        .schema(
+            PACE,
+            (atom, p) ->
+                Schema.builder(PACE)
+                    .add(new Pacemaker(PACEMAKER, atom.periodNanos, p.number(PHASE), 1))
+                    .build())
+        .connector(
+            PACE_CONNECTORS.get(0),
+            (atom, p) -> new Derivator(new PortRef(PACEMAKER, BEAT), PortRef.of(atom.crawl, BEAT)))
+        .connector(
+            PACE_CONNECTORS.get(1),
+            (atom, p) -> new Derivator(new PortRef(PACEMAKER, BEAT), PortRef.of(atom.relay, BEAT)))
+        .define(kernel);
   }
 
-  /** The adaptations that make an atom the tail of its molecule: no relay, no detach. */
-  List<Adaptation> becomeTail() {
-    return List.of(new Adaptation.RemoveSchema(DETACH), new Adaptation.RemoveSchema(RELAY));
+  private static final String PACEMAKER = "pacemaker";
+
+  private static Leg leg(String name) {
+    for (Leg leg : Leg.values()) {
+      if (leg.name().equals(name)) {
+        return leg;
+      }
+    }
+    throw new IllegalArgumentException(
+        "leg '" + name + "': expected one of " + java.util.Arrays.toString(Leg.values()));
+  }
+
+  /** What an atom shows its meta level: its bonds, its beat, the walls it sees. */
+  @Override
+  protected Map<String, Object> observe() {
+    Map<String, Object> m = super.observe();
+    boolean ahead = false;
+    boolean behind = false;
+    double phase = -1;
+    double left = -1;
+    double right = -1;
+    for (Emission e : emissions()) {
+      switch (e.signal()) {
+        case Bonds b -> {
+          ahead = b.ahead().isPresent();
+          behind = b.behind().isPresent();
+        }
+        case Beat b -> phase = b.phase();
+        case Walls w -> {
+          left = w.left();
+          right = w.right();
+        }
+        default -> {}
+      }
+    }
+    m.put(BOND_AHEAD, ahead);
+    m.put(BOND_BEHIND, behind);
+    m.put(PHASE, phase);
+    m.put(WALL_LEFT, left);
+    m.put(WALL_RIGHT, right);
+    return m;
   }
 
   /** The derivators that feed {@code source}'s beat to the crawl, and to the relay if any. */

@@ -7,20 +7,37 @@ import java.util.TreeSet;
 import java.util.stream.Collectors;
 import org.armgals.examples.cli.Summary;
 import org.armgals.examples.sim.Crew;
+import org.armgals.examples.sim.Reflection;
 import org.armgals.maam.Schema;
 import org.armgals.maam.sim.LegSensors;
 import org.armgals.maam.sim.Simulation;
 
-/** One run of {@link Reconfigure}: the chain's robots and its meta level. */
+/** One run of {@link Reconfigure}: the chain's robots, its meta level and reflective side. */
 final class ReconfigureCrew implements Crew {
   private final Simulation sim;
   private final List<ReconfigureAtom> robots;
-  private final ReconfigureMeta meta;
+  private final Reconfigure.Level level;
+  private final Reflection reflection;
 
-  ReconfigureCrew(Simulation sim, List<ReconfigureAtom> robots, ReconfigureMeta meta) {
+  ReconfigureCrew(
+      Simulation sim,
+      List<ReconfigureAtom> robots,
+      Reconfigure.Level level,
+      Reflection reflection) {
     this.sim = sim;
     this.robots = List.copyOf(robots);
-    this.meta = meta;
+    this.level = level;
+    this.reflection = reflection;
+  }
+
+  @Override
+  public java.util.Optional<Reflection> reflection() {
+    return java.util.Optional.of(reflection);
+  }
+
+  @Override
+  public void close() {
+    reflection.close();
   }
 
   /** The robots, rear first. */
@@ -28,8 +45,9 @@ final class ReconfigureCrew implements Crew {
     return robots;
   }
 
+  /** The meta level of a local run. */
   ReconfigureMeta meta() {
-    return meta;
+    return java.util.Objects.requireNonNull(level.meta(), "meta");
   }
 
   /** Bonds between atoms, from their binding sensors. */
@@ -74,13 +92,6 @@ final class ReconfigureCrew implements Crew {
   @Override
   public List<Summary.Entry> figures() {
     List<Summary.Entry> figures = new ArrayList<>();
-    figures.add(
-        new Summary.Entry(
-            "split",
-            meta.splitAt() < 0
-                ? "no"
-                : String.format(
-                    Locale.ROOT, "at %.2f s (%s)", meta.splitAt() / 1e9, meta.stage())));
     figures.add(
         new Summary.Entry(
             "molecules at the end",

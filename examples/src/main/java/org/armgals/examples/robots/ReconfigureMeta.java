@@ -1,38 +1,34 @@
 package org.armgals.examples.robots;
 
-import static java.util.Objects.requireNonNull;
-
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.function.Consumer;
-import org.armgals.examples.robots.ReconfigureSignals.Beat;
-import org.armgals.examples.robots.ReconfigureSignals.Bonds;
-import org.armgals.examples.robots.ReconfigureSignals.Walls;
-import org.armgals.examples.sim.Journal;
-import org.armgals.maam.Adaptation;
-import org.armgals.maam.CycleReport;
-import org.jspecify.annotations.Nullable;
+import java.util.Map;
+import org.armgals.kernel.Damping;
+import org.armgals.kernel.Entity;
+import org.armgals.kernel.Notification;
+import org.armgals.kernel.spi.MetaContext;
+import org.armgals.maam.BMetaRobot;
+import org.armgals.maam.RobotKind;
 
 /**
- * The behavioral meta level of {@link Reconfigure}'s chain, notified by every atom's robot. Its
- * model: how long the front atom has seen walls on both sides, each atom's bonds and beat. Its
- * rule:
+ * The behavioral meta level of {@link Reconfigure}'s chain, a behavioral meta-entity of the kernel
+ * taking every atom's robot, notified of their states (bonds, beat, walls seen). Its model: how
+ * long the front atom has seen walls on both sides, each atom's bonds and beat. Its rule:
  *
  * <ol>
  *   <li>when the front atom has seen both walls for {@value ReconfigureTuning#CORRIDOR_SECONDS} s
- *       (a corridor), split the chain in the middle: add the {@value ReconfigureAtom#DETACH} schema
- *       to the two atoms of the middle bond;
+ *       (a corridor), split the chain in the middle: ask the two atoms of the middle bond for the
+ *       {@value ReconfigureAtom#DETACH} schema;
  *   <li>when both have sensed the bond gone, reconfigure the software with the body: the rear
  *       pair's front atom replaces {@value ReconfigureAtom#FOLLOW} by {@value ReconfigureAtom#PACE}
  *       (it is a head now, going on from the phase it followed), the front pair's rear atom removes
  *       its {@value ReconfigureAtom#RELAY} (no one is behind it); both drop the detach schema.
  * </ol>
  *
- * Each adaptation is told to the journal with what the meta level saw. Called on the simulation's
- * thread, from the robots' cycles.
+ * Each request says what the meta level saw. Runs on its meta-entity's own object, in the chain's
+ * JVM or another.
  */
-final class ReconfigureMeta {
+final class ReconfigureMeta extends BMetaRobot {
   /** Where the chain splits: between the atoms at these places, 0 at the rear. */
   static final int REAR_HEAD = ReconfigureTuning.ATOMS / 2 - 1;
 
@@ -45,29 +41,25 @@ final class ReconfigureMeta {
     SPLIT
   }
 
-  private final Journal journal;
+  private final List<String> robots;
   private final long periodNanos;
-  private final List<ReconfigureAtom> robots = new ArrayList<>();
-  private final List<Integer> atomIds = new ArrayList<>();
-  private final List<@Nullable Bonds> bonds = new ArrayList<>();
-  private final List<@Nullable Beat> beats = new ArrayList<>();
-  private Stage stage = Stage.CHAIN;
+  private final boolean[] ahead;
+  private final boolean[] behind;
+  private final double[] phase;
+  private volatile Stage stage = Stage.CHAIN;
   private long wallsSince = -1;
-  private long splitAt = -1;
+  private volatile long splitAt = -1;
 
-  ReconfigureMeta(Journal journal, long periodNanos) {
-    this.journal = requireNonNull(journal, "journal");
+  /**
+   * @param robots the names of the atoms' robots, rear first
+   */
+  ReconfigureMeta(List<String> robots, long periodNanos) {
+    super("bmchain", Damping.none());
+    this.robots = List.copyOf(robots);
     this.periodNanos = periodNanos;
-  }
-
-  /** Watches the robot of the next atom of the chain, rear first; the last is the front. */
-  void watch(int atomId, ReconfigureAtom robot) {
-    int index = robots.size();
-    atomIds.add(atomId);
-    robots.add(requireNonNull(robot, "robot"));
-    bonds.add(null);
-    beats.add(null);
-    robot.watchedBy((report, requests) -> onCycle(index, report, requests));
+    this.ahead = new boolean[robots.size()];
+    this.behind = new boolean[robots.size()];
+    this.phase = new double[robots.size()];
   }
 
   /** What it has done so far. */
@@ -75,30 +67,36 @@ final class ReconfigureMeta {
     return stage;
   }
 
-  /** When it decided to split the chain (ns of virtual time), or −1. */
+  /** When it decided to split the chain (ns of the base level's time), or −1. */
   long splitAt() {
     return splitAt;
   }
 
-  private void onCycle(int index, CycleReport report, Consumer<Adaptation> requests) {
-    @Nullable Walls walls = null;
-    for (CycleReport.Emission e : report.emissions()) {
-      switch (e.signal()) {
-        case Bonds b -> bonds.set(index, b);
-        case Beat b -> beats.set(index, b);
-        case Walls w -> walls = w;
-        default -> {}
-      }
+  @Override
+  public void onNotification(MetaContext context, Notification n) {
+    Map<String, Object> seen = observation(n).orElse(null);
+    int index = robots.indexOf(context.entity(n.entity()).name());
+    if (seen == null || index < 0) {
+      return;
     }
+    ahead[index] = (Boolean) seen.get(ReconfigureAtom.BOND_AHEAD);
+    behind[index] = (Boolean) seen.get(ReconfigureAtom.BOND_BEHIND);
+    phase[index] = (Double) seen.get(ReconfigureAtom.PHASE);
     if (stage == Stage.CHAIN && index == robots.size() - 1) {
-      watchWalls(walls, report.nanoTime());
-    } else if (stage == Stage.SPLITTING && index == REAR_HEAD && middleBondGone()) {
-      reconfigure(requests);
+      double left = (Double) seen.get(ReconfigureAtom.WALL_LEFT);
+      double right = (Double) seen.get(ReconfigureAtom.WALL_RIGHT);
+      watchWalls(context, left, right);
+    } else if (stage == Stage.SPLITTING
+        && index == REAR_HEAD
+        && !ahead[REAR_HEAD]
+        && !behind[FRONT_TAIL]) {
+      reconfigure(context);
     }
   }
 
-  private void watchWalls(@Nullable Walls walls, long now) {
-    if (walls == null) {
+  private void watchWalls(MetaContext context, double left, double right) {
+    long now = context.nanoTime();
+    if (left < 0 || right < 0) {
       wallsSince = -1;
       return;
     }
@@ -116,35 +114,51 @@ final class ReconfigureMeta {
             Locale.ROOT,
             "the front atom sees walls on both sides (%.2f m, %.2f m) for %.1f s: a corridor,"
                 + " go on as two pairs",
-            walls.left(),
-            walls.right(),
+            left,
+            right,
             seen);
-    robots.get(REAR_HEAD).request(robots.get(REAR_HEAD).detach(ReconfigureModules.AHEAD));
-    journal.adaptation(atomIds.get(REAR_HEAD), "added schema detach (+x bond)", why);
-    robots.get(FRONT_TAIL).request(robots.get(FRONT_TAIL).detach(ReconfigureModules.BEHIND));
-    journal.adaptation(atomIds.get(FRONT_TAIL), "added schema detach (-x bond)", why);
+    ask(
+        context,
+        REAR_HEAD,
+        why,
+        RobotKind.addSchema(ReconfigureAtom.DETACH, Map.of(ReconfigureAtom.LEG, "PX")));
+    ask(
+        context,
+        FRONT_TAIL,
+        why,
+        RobotKind.addSchema(ReconfigureAtom.DETACH, Map.of(ReconfigureAtom.LEG, "MX")));
   }
 
-  private boolean middleBondGone() {
-    Bonds rear = bonds.get(REAR_HEAD);
-    Bonds front = bonds.get(FRONT_TAIL);
-    return rear != null && front != null && rear.ahead().isEmpty() && front.behind().isEmpty();
-  }
-
-  private void reconfigure(Consumer<Adaptation> requests) {
+  private void reconfigure(MetaContext context) {
     stage = Stage.SPLIT;
-    Beat beat = beats.get(REAR_HEAD);
-    double phase = (beat == null ? 0 : beat.phase()) + ReconfigureTuning.advance(periodNanos);
-    robots.get(REAR_HEAD).becomeHead(phase % (2 * Math.PI)).forEach(requests);
-    journal.adaptation(
-        atomIds.get(REAR_HEAD),
-        "replaced schema follow by pace, removed schema detach",
-        "its +x bond is gone (binding sensor): it heads the rear pair and beats its own rhythm");
-    ReconfigureAtom tail = robots.get(FRONT_TAIL);
-    tail.becomeTail().forEach(tail::request);
-    journal.adaptation(
-        atomIds.get(FRONT_TAIL),
-        "removed schemas relay and detach",
-        "its -x bond is gone (binding sensor): no atom behind it to pass the rhythm to");
+    double from =
+        (phase[REAR_HEAD] < 0 ? 0 : phase[REAR_HEAD]) + ReconfigureTuning.advance(periodNanos);
+    String head =
+        "its +x bond is gone (binding sensor): it heads the rear pair and beats its own rhythm";
+    ask(context, REAR_HEAD, head, RobotKind.removeSchema(ReconfigureAtom.DETACH));
+    ask(context, REAR_HEAD, head, RobotKind.removeSchema(ReconfigureAtom.FOLLOW));
+    ask(
+        context,
+        REAR_HEAD,
+        head,
+        RobotKind.addSchema(
+            ReconfigureAtom.PACE, Map.of(ReconfigureAtom.PHASE, from % (2 * Math.PI))));
+    for (String connector : ReconfigureAtom.PACE_CONNECTORS) {
+      ask(context, REAR_HEAD, head, RobotKind.addConnector(connector, Map.of()));
+    }
+    String tail = "its -x bond is gone (binding sensor): no atom behind it to pass the rhythm to";
+    ask(context, FRONT_TAIL, tail, RobotKind.removeSchema(ReconfigureAtom.DETACH));
+    ask(context, FRONT_TAIL, tail, RobotKind.removeSchema(ReconfigureAtom.RELAY));
+  }
+
+  private void ask(
+      MetaContext context, int index, String why, org.armgals.kernel.Adaptation request) {
+    for (Entity atom : context.self().baseLevelEntities()) {
+      if (atom.name().equals(robots.get(index))) {
+        context.adapt(atom.address(), RobotKind.because(why, request));
+        return;
+      }
+    }
+    throw new IllegalStateException("no atom " + robots.get(index) + " among " + robots);
   }
 }

@@ -5,15 +5,28 @@ import static java.util.Objects.requireNonNull;
 import java.time.Duration;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
 import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
 import org.armgals.examples.sim.Crew;
 import org.armgals.examples.sim.Journal;
+import org.armgals.examples.sim.MetaLevel;
+import org.armgals.examples.sim.Reflection;
 import org.armgals.examples.sim.SimExample;
-import org.armgals.maam.CycleReport;
+import org.armgals.gals.Island;
+import org.armgals.kernel.AdaptationPoint;
+import org.armgals.kernel.Damping;
+import org.armgals.kernel.Kernel;
+import org.armgals.kernel.Notification;
+import org.armgals.kernel.NotificationPolicy;
+import org.armgals.kernel.StructuralMeta;
+import org.armgals.kernel.spi.MetaContext;
+import org.armgals.maam.BMetaRobot;
 import org.armgals.maam.sim.Scene;
 import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;
+import org.armgals.representation.p.PState;
 import org.jspecify.annotations.Nullable;
 
 /**
@@ -21,9 +34,9 @@ import org.jspecify.annotations.Nullable;
  * ground under reactive control (paper §5): a gait schema circles its three ground legs' tips a
  * third of a turn apart, waiting for legs that lag behind, which shuffles the atom towards −x
  * ({@link WalkerTuning#HEADING}); a balance schema suppresses the gait while the atom tips too far
- * (subsumption, figure 5). A watcher on the behavioral meta level notes each time the balance
- * reflex takes over, and sums the progress along the heading. One atom, a fixed shape: {@code
- * --atoms} does not apply.
+ * (subsumption, figure 5). The robot is a kernel entity; a watcher on its behavioral meta level
+ * notes each time the balance reflex takes over, and sums the progress along the heading. One atom,
+ * a fixed shape: {@code --atoms} does not apply.
  */
 public final class Walker implements SimExample {
 
@@ -60,6 +73,42 @@ public final class Walker implements SimExample {
     return Scenes.parse("scene walker\natom 1 0 0 0.07 tripod\n");
   }
 
+  /**
+   * Its meta level: a watcher of the walker's balance reflex and course, which asks for nothing.
+   */
+  @Override
+  public Optional<MetaLevel> metaLevel(RunSettings settings) {
+    return Optional.of(new Level());
+  }
+
+  /** The walker's meta level: the same code in the robot's JVM or another. */
+  static final class Level implements MetaLevel {
+    private @Nullable BalanceWatch watch;
+
+    @Override
+    public Map<String, StructuralMeta<PState>> kinds(Kernel kernel) {
+      return Map.of(ROBOT, WalkerRobot.kind(kernel));
+    }
+
+    @Override
+    public List<Watch> watches(MetaNotes notes) {
+      BalanceWatch w = new BalanceWatch(notes);
+      watch = w;
+      return List.of(new Watch(w, List.of(ROBOT), ""));
+    }
+
+    @Override
+    public List<Summary.Entry> figures() {
+      BalanceWatch w = requireNonNull(watch, "watch");
+      return List.of(
+          new Summary.Entry("balance reflex", w.takeovers() + " takeovers of the gait"),
+          new Summary.Entry(
+              "progress along the heading", String.format(Locale.ROOT, "%.3f m", w.progress())));
+    }
+  }
+
+  private static final String ROBOT = "walker";
+
   @Override
   public Crew start(Simulation sim, RunSettings settings, Journal journal) {
     requireNonNull(sim, "sim");
@@ -68,68 +117,81 @@ public final class Walker implements SimExample {
     int id = sim.atomIds().get(0);
     WalkerRobot robot =
         new WalkerRobot(TrackedBody.of(sim, id), sim::timeNanos, settings.period().toNanos() / 1e9);
-    BalanceWatch watch = new BalanceWatch(journal, id);
-    robot.watchedBy((report, requests) -> watch.integrate(report));
-    sim.setController(id, (atom, cycle) -> robot.cycle());
+    Reflection reflection =
+        Reflection.open(sim, settings, name(), metaLevel(settings).orElseThrow(), journal);
+    try {
+      Island island = reflection.island(ROBOT, AdaptationPoint.END_OF_CYCLE);
+      reflection.start(robot, id, island, NotificationPolicy.statesOnly());
+      sim.setController(id, (atom, cycle) -> reflection.step(island));
+      reflection.ready();
+    } catch (RuntimeException | Error e) {
+      reflection.close();
+      throw e;
+    }
     return new Crew() {
       @Override
+      public Optional<Reflection> reflection() {
+        return Optional.of(reflection);
+      }
+
+      @Override
       public List<Summary.Entry> figures() {
-        return List.of(
-            new Summary.Entry("balance reflex", watch.takeovers() + " takeovers of the gait"),
-            new Summary.Entry(
-                "progress along the heading",
-                String.format(Locale.ROOT, "%.3f m", watch.progress())),
-            new Summary.Entry("module errors", Long.toString(robot.errors())));
+        return List.of(new Summary.Entry("module errors", Long.toString(robot.errors())));
+      }
+
+      @Override
+      public void close() {
+        reflection.close();
       }
     };
   }
 
-  /** Counts the times the balance reflex took over from the gait, and notes each in the trace. */
-  private static final class BalanceWatch {
-    private final Journal journal;
-    private final int atom;
+  /**
+   * The walker's behavioral meta level: from the walker's states it counts the times the balance
+   * reflex took over from the gait, noting each, and sums the progress along the heading. It only
+   * watches.
+   */
+  private static final class BalanceWatch extends BMetaRobot {
+    private final MetaLevel.MetaNotes notes;
     private boolean balancing;
-    private int takeovers;
-    private WalkerSignals.@Nullable Course first;
-    private WalkerSignals.@Nullable Course last;
+    private volatile int takeovers;
+    private double firstX = Double.NaN;
+    private double firstY;
+    private volatile double progress;
 
-    BalanceWatch(Journal journal, int atom) {
-      this.journal = journal;
-      this.atom = atom;
+    BalanceWatch(MetaLevel.MetaNotes notes) {
+      super("bmwalker", Damping.none());
+      this.notes = notes;
     }
 
-    void integrate(CycleReport report) {
-      for (CycleReport.Emission e : report.emissions()) {
-        if (e.signal() instanceof WalkerSignals.Course course) {
-          if (first == null) {
-            first = course;
-          }
-          last = course;
-        }
+    @Override
+    public void onNotification(MetaContext context, Notification n) {
+      Map<String, Object> seen = observation(n).orElse(null);
+      if (seen == null || !(seen.get(WalkerRobot.BALANCING) instanceof Boolean now)) {
+        return;
       }
-      boolean now =
-          report.emissions().stream()
-              .anyMatch(
-                  e ->
-                      e.port().module().equals("balance")
-                          && e.port().port().equals(WalkerSignals.TARGETS));
+      double x = (Double) seen.get(WalkerRobot.X);
+      double y = (Double) seen.get(WalkerRobot.Y);
+      if (Double.isNaN(firstX)) {
+        firstX = x;
+        firstY = y;
+      }
+      progress =
+          (x - firstX) * Math.cos(WalkerTuning.HEADING)
+              + (y - firstY) * Math.sin(WalkerTuning.HEADING);
       if (now && !balancing) {
         takeovers++;
-        journal.note(
-            atom, String.format(Locale.ROOT, "balance reflex suppresses the gait (%d)", takeovers));
+        notes.note(
+            ROBOT,
+            context.nanoTime(),
+            String.format(Locale.ROOT, "balance reflex suppresses the gait (%d)", takeovers));
       }
       balancing = now;
     }
 
     /** Metres made good along {@link WalkerTuning#HEADING} since the first cycle. */
     double progress() {
-      WalkerSignals.Course from = first;
-      WalkerSignals.Course to = last;
-      if (from == null || to == null) {
-        return 0;
-      }
-      return (to.x() - from.x()) * Math.cos(WalkerTuning.HEADING)
-          + (to.y() - from.y()) * Math.sin(WalkerTuning.HEADING);
+      return progress;
     }
 
     int takeovers() {

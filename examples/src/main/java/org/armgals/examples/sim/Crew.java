@@ -25,6 +25,14 @@ public interface Crew extends AutoCloseable {
     return 0;
   }
 
+  /**
+   * The reflective side of the run ({@link Reflection}), if the crew's robots are kernel entities:
+   * the run finishes it after the last cycle, which records the loop and sums it up.
+   */
+  default java.util.Optional<Reflection> reflection() {
+    return java.util.Optional.empty();
+  }
+
   /** Stops what the crew started (islands, runtimes, processes); the default does nothing. */
   @Override
   default void close() {}

@@ -39,6 +39,14 @@ public interface SimExample extends Example {
   }
 
   /**
+   * Its meta level for a run with {@code settings} ({@link MetaLevel}), if it has one: what {@code
+   * --meta local|remote} places in the robots' JVM or in another. Empty by default.
+   */
+  default java.util.Optional<MetaLevel> metaLevel(RunSettings settings) {
+    return java.util.Optional.empty();
+  }
+
+  /**
    * Installs the controllers of {@code sim}'s atoms (with {@link Simulation#setController}) and
    * whatever meta level watches them, before the first cycle; called on the thread that will run
    * the simulation.

@@ -121,7 +121,12 @@ final class SimRun {
             missed = counts[1];
             recording.end(sim.timeNanos());
             crewMissed = crew.missedCycles();
-            figures = crew.figures();
+            List<Summary.Entry> loop = new java.util.ArrayList<>();
+            if (ran > 0) {
+              crew.reflection().ifPresent(r -> loop.addAll(r.finish(staging.dir())));
+            }
+            figures = new java.util.ArrayList<>(crew.figures());
+            figures.addAll(loop);
           }
         }
         if (ran < cycles) {

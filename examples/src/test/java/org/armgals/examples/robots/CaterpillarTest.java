@@ -13,7 +13,6 @@ import java.util.OptionalLong;
 import org.armgals.active.Address;
 import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
-import org.armgals.examples.robots.CaterpillarModules.Pacemaker;
 import org.armgals.examples.robots.GaitsTestSupport.TestJournal;
 import org.armgals.examples.sim.Crew;
 import org.armgals.kernel.BehavioralMeta;
@@ -61,8 +60,7 @@ class CaterpillarTest {
 
   @Test
   void metaLevelLengthensTheStrideOnlyWhileStepsAreShort() {
-    Pacemaker pacemaker = new Pacemaker(CaterpillarSegment.PACEMAKER, 0.8, 0.2, 0.25, 0.01, 0);
-    CaterpillarMeta meta = new CaterpillarMeta(pacemaker);
+    CaterpillarMeta meta = new CaterpillarMeta("bmrobot");
     RecordingContext context = new RecordingContext();
     // Six steps of 5 cm: fast enough, nothing to do.
     feedSteps(meta, context, 0, 6, 0.05);
@@ -76,11 +74,11 @@ class CaterpillarTest {
                 a instanceof org.armgals.kernel.Adaptation.ApplyBehavior b
                     && b.behavior().equals("changeModule")
                     && b.input() instanceof Map<?, ?> m
-                    && CaterpillarSegment.PACEMAKER.equals(m.get("module")));
+                    && CaterpillarSegment.PACEMAKER.equals(m.get("name")));
     assertThat(meta.stride()).isEqualTo(CaterpillarTuning.MAX_STRIDE);
-    assertThat(meta.nextReason())
-        .satisfies(r -> assertThat(r[0]).contains("stride 0.20 -> 0.30"))
-        .satisfies(r -> assertThat(r[1]).contains("advanced 1.0 cm"));
+    assertThat(org.armgals.maam.RobotKind.reason(context.requests.get(0)))
+        .hasValueSatisfying(
+            why -> assertThat(why).contains("stride 0.20 -> 0.30").contains("advanced 1.0 cm"));
   }
 
   @Test

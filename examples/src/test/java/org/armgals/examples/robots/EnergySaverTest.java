@@ -107,16 +107,15 @@ class EnergySaverTest {
         .singleElement()
         .satisfies(
             told -> {
-              assertThat(told.what()).startsWith("switched to saving gait");
-              assertThat(told.why()).isEqualTo("battery at 30%");
+              assertThat(told.what()).isEqualTo("changeModule stepper {gait=saving}");
+              assertThat(told.why()).startsWith("battery at 30%: saving gait");
             });
     double switchedAt = with.journal().adaptations.getFirst().seconds();
     assertThat(switchedAt).isBetween(0.3 * without.lifetime(), 0.9 * without.lifetime());
-    // Every energy event before the threshold meta-event was dropped, one per cycle; every one
-    // after it went through the new filter.
-    assertThat((double) meta.dropped()).isCloseTo(switchedAt / PERIOD_SECONDS, within(1.5));
-    assertThat(meta.dropped() + meta.followed()).isEqualTo(with.crew().robot().cycles());
-    assertThat(meta.filter().expression()).isEqualTo(EnergyMeta.FOLLOWING_ENERGY);
+    // Every state after the threshold meta-event went through the new filter, one per cycle.
+    assertThat((double) meta.followed())
+        .isCloseTo(with.crew().robot().cycles() - switchedAt / PERIOD_SECONDS, within(2.5));
+    assertThat(meta.filter()).isEqualTo(EnergyMeta.FOLLOWING_ENERGY);
     assertThat(meta.savingWatts()).isPositive();
   }
 
@@ -133,13 +132,13 @@ class EnergySaverTest {
         .contains(
             new Summary.Entry("adaptations", "1"),
             new Summary.Entry("gait", "saving"),
-            new Summary.Entry("meta's filter", EnergyMeta.FOLLOWING_ENERGY));
+            new Summary.Entry("meta's filter at the end", EnergyMeta.FOLLOWING_ENERGY));
     assertThat(summary.entries())
         .anySatisfy(
             e ->
                 assertThat(e.value())
-                    .contains("switched to saving gait")
-                    .endsWith("because battery at 30%"));
+                    .contains("changeModule stepper {gait=saving}")
+                    .contains("because battery at 30%"));
     for (String file :
         List.of(
             "trace.jsonl",
@@ -151,7 +150,9 @@ class EnergySaverTest {
       assertThat(out.resolve(file)).as(file).isNotEmptyFile();
     }
     assertThat(Files.readString(out.resolve("trace.jsonl")))
-        .contains("switched to saving gait")
-        .contains("after dropping");
+        .contains("changeModule stepper {gait=saving}");
+    assertThat(Files.readString(out.resolve("loop.jsonl")))
+        .contains("\"event\":\"filter\"")
+        .contains("filter now");
   }
 }

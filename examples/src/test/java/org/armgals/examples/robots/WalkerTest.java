@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.io.OutputStream;
 import java.io.PrintStream;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
@@ -13,6 +14,7 @@ import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
 import org.armgals.examples.robots.GaitsTestSupport.TestJournal;
 import org.armgals.examples.sim.Crew;
+import org.armgals.examples.sim.Reflection;
 import org.armgals.maam.sim.AtomSensors;
 import org.armgals.maam.sim.Simulation;
 import org.armgals.maam.sim.Vec3;
@@ -51,7 +53,7 @@ class WalkerTest {
   }
 
   @Test
-  void balanceReflexSuppressesTheGaitWhenTheAtomIsKnockedOver() {
+  void balanceReflexSuppressesTheGaitWhenTheAtomIsKnockedOver(@TempDir Path out) throws Exception {
     RunSettings settings = GaitsTestSupport.settings(Optional.empty());
     try (Simulation sim = Simulation.builder(walker.scene(settings)).build()) {
       int id = sim.atomIds().get(0);
@@ -63,9 +65,11 @@ class WalkerTest {
           sim.runCycle();
         }
         sim.runCycles(30);
-        assertThat(figure(crew.figures(), "balance reflex")).doesNotStartWith("0 ");
+        List<Summary.Entry> loop = crew.reflection().orElseThrow().finish(out);
+        assertThat(figure(loop, "balance reflex")).doesNotStartWith("0 ");
       }
-      assertThat(journal.notes).anyMatch(n -> n.contains("balance reflex suppresses the gait"));
+      assertThat(Files.readString(out.resolve(Reflection.LOOP)))
+          .contains("balance reflex suppresses the gait");
     }
   }
 

@@ -2,7 +2,6 @@ package org.armgals.maam.guide;
 
 import java.time.Duration;
 import org.armgals.active.TimeSource;
-import org.armgals.kernel.AdaptationPoint;
 import org.armgals.maam.AbstractRobot;
 import org.armgals.maam.PortRef;
 import org.armgals.maam.Schema;
@@ -45,7 +44,6 @@ final class BalancingAtom extends AbstractRobot {
             PortRef.of(rest, Modules.STANCE),
             PortRef.of(balance, Modules.STANCE),
             Duration.ofMillis(50)));
-    setAdaptationPoint(AdaptationPoint.END_OF_CYCLE);
   }
 }
 // end::robot[]

@@ -5,12 +5,19 @@ import static java.util.Objects.requireNonNull;
 import java.util.List;
 
 /**
- * A change to a robot's reactive program, requested by its meta level (paper §5.4: {@code
- * setScheduling} and {@code changeModule} method requests) and applied by the robot at its {@link
- * org.armgals.kernel.AdaptationPoint}. A request that would break the program (a cycle, an unknown
- * name) is rejected whole: the program stays as it was.
+ * A change to a robot's reactive program, as its {@link MetaRobot} applies it: what a robot's
+ * registration methods make in its constructor, and what a request of its behavioral meta ({@link
+ * RobotKind}: {@code setScheduling}, {@code changeModule}...) becomes once the robot has built its
+ * parts from its kind's catalog. A change that would break the program (a cycle, an unknown name)
+ * is rejected whole: the program stays as it was.
  */
-public sealed interface Adaptation {
+final class ProgramChange {
+
+  private ProgramChange() {}
+
+  /** One change. */
+  sealed interface Change
+      permits SetScheduling, ChangeModule, AddSchema, RemoveSchema, AddConnector, RemoveConnector {}
 
   /**
    * Replaces the whole program: a new reactive program for a while (§5.1), completely rescheduled.
@@ -18,10 +25,10 @@ public sealed interface Adaptation {
    * @param schemas in schedule order
    * @param connectors joining them
    */
-  record SetScheduling(List<Schema> schemas, List<Connector> connectors) implements Adaptation {
+  record SetScheduling(List<Schema> schemas, List<Connector> connectors) implements Change {
 
     /** Copies the lists. */
-    public SetScheduling {
+    SetScheduling {
       schemas = List.copyOf(schemas);
       connectors = List.copyOf(connectors);
     }
@@ -33,10 +40,10 @@ public sealed interface Adaptation {
    *
    * @param replacement the new module
    */
-  record ChangeModule(BehaviorModule replacement) implements Adaptation {
+  record ChangeModule(BehaviorModule replacement) implements Change {
 
     /** Checks for null. */
-    public ChangeModule {
+    ChangeModule {
       requireNonNull(replacement, "replacement");
     }
   }
@@ -46,10 +53,10 @@ public sealed interface Adaptation {
    *
    * @param schema its name not used yet
    */
-  record AddSchema(Schema schema) implements Adaptation {
+  record AddSchema(Schema schema) implements Change {
 
     /** Checks for null. */
-    public AddSchema {
+    AddSchema {
       requireNonNull(schema, "schema");
     }
   }
@@ -59,10 +66,10 @@ public sealed interface Adaptation {
    *
    * @param name the schema's name
    */
-  record RemoveSchema(String name) implements Adaptation {
+  record RemoveSchema(String name) implements Change {
 
     /** Checks for null. */
-    public RemoveSchema {
+    RemoveSchema {
       requireNonNull(name, "name");
     }
   }
@@ -72,10 +79,10 @@ public sealed interface Adaptation {
    *
    * @param connector between modules of the program
    */
-  record AddConnector(Connector connector) implements Adaptation {
+  record AddConnector(Connector connector) implements Change {
 
     /** Checks for null. */
-    public AddConnector {
+    AddConnector {
       requireNonNull(connector, "connector");
     }
   }
@@ -85,10 +92,10 @@ public sealed interface Adaptation {
    *
    * @param connector one of the program's
    */
-  record RemoveConnector(Connector connector) implements Adaptation {
+  record RemoveConnector(Connector connector) implements Change {
 
     /** Checks for null. */
-    public RemoveConnector {
+    RemoveConnector {
       requireNonNull(connector, "connector");
     }
   }

@@ -1,0 +1,109 @@
+package org.armgals.examples.sim;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.armgals.examples.cli.RunSettings;
+import org.armgals.examples.cli.Summary;
+
+/**
+ * What a run's summary says of its reflective loop, from the loop's record ({@link LoopRecorder}):
+ * where the meta level ran and how it kept pace, the notifications sent and what its filter let
+ * through, its filter changes, its requests and what became of them, the cycles from decision to
+ * application, and a meta level lost.
+ *
+ * @param entries the summary's lines
+ */
+record LoopSummary(List<Summary.Entry> entries) {
+
+  static LoopSummary of(
+      List<Map<String, Object>> loop, boolean hasMeta, RunSettings settings, boolean remote) {
+    List<Summary.Entry> entries = new ArrayList<>();
+    if (!hasMeta) {
+      entries.add(new Summary.Entry("meta level", "none"));
+      return new LoopSummary(entries);
+    }
+    entries.add(
+        new Summary.Entry(
+            "meta level",
+            (remote ? "remote, in a JVM of its own over the broker" : "local, in the robots' JVM")
+                + (settings.realTime()
+                    ? "; free (the robots never wait for it)"
+                    : "; in lock step, one cycle behind")));
+    Map<String, Integer> count = new HashMap<>();
+    Map<String, Long> requestedAt = new HashMap<>();
+    List<Long> latencies = new ArrayList<>();
+    int passed = 0;
+    int overruns = 0;
+    String lost = null;
+    for (Map<String, Object> r : loop) {
+      String event = String.valueOf(r.get("event"));
+      count.merge(event, 1, Integer::sum);
+      long cycle = ((Number) r.get("cycle")).longValue();
+      String key = r.get("robot") + "#" + r.get("version");
+      switch (event) {
+        case "received" -> passed += Boolean.TRUE.equals(r.get("passed")) ? 1 : 0;
+        case "requested" -> requestedAt.put(key, cycle);
+        case "applied", "refused" -> {
+          Long at = requestedAt.get(key);
+          if (at != null) {
+            latencies.add(cycle - at);
+          }
+          overruns += Boolean.TRUE.equals(r.get("overrun")) ? 1 : 0;
+        }
+        case "meta-lost", "free" -> {
+          if (lost == null) {
+            lost = "at cycle " + cycle + " (" + r.getOrDefault("reason", r.get("runtime")) + ")";
+          }
+        }
+        default -> {}
+      }
+    }
+    entries.add(
+        new Summary.Entry(
+            "notifications",
+            count.getOrDefault("notified", 0)
+                + " sent, "
+                + count.getOrDefault("received", 0)
+                + " received, "
+                + passed
+                + " through its filter"));
+    entries.add(
+        new Summary.Entry("filter changes", Integer.toString(count.getOrDefault("filter", 0))));
+    entries.add(
+        new Summary.Entry(
+            "requests",
+            count.getOrDefault("requested", 0)
+                + " ("
+                + count.getOrDefault("applied", 0)
+                + " applied, "
+                + count.getOrDefault("refused", 0)
+                + " refused, "
+                + count.getOrDefault("suppressed", 0)
+                + " held back by its damping)"));
+    if (!latencies.isEmpty()) {
+      latencies.sort(null);
+      entries.add(
+          new Summary.Entry(
+              "decided to applied",
+              String.format(
+                  Locale.ROOT,
+                  "%d cycles (median), %d at most",
+                  latencies.get(latencies.size() / 2),
+                  latencies.get(latencies.size() - 1))));
+    }
+    if (overruns > 0) {
+      entries.add(
+          new Summary.Entry(
+              "adaptation overruns", overruns + " applied past the cycle's time budget"));
+    }
+    if (lost != null) {
+      entries.add(
+          new Summary.Entry(
+              "meta level lost", lost + "; the robots ran on, free, with their last program"));
+    }
+    return new LoopSummary(entries);
+  }
+}
