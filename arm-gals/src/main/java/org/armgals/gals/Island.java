@@ -95,6 +95,16 @@ public interface Island extends AutoCloseable {
   Entity spawn(StructuralMeta<?> kind, String name, BehavioralMeta meta, EntityOptions options);
 
   /**
+   * {@link #spawn(StructuralMeta, String, BehavioralMeta, EntityOptions)} with no behavioral meta
+   * yet ({@link StructuralMeta#newEntity(String, EntityOptions)}): for a meta of another runtime to
+   * take.
+   *
+   * @throws IllegalArgumentException a blank or taken name (in the kernel)
+   * @throws IllegalStateException the island is closed
+   */
+  Entity spawn(StructuralMeta<?> kind, String name, EntityOptions options);
+
+  /**
    * Options for a kernel entity of this island, to refine with {@link
    * EntityOptions#withNotification}, {@link EntityOptions#withLockStep} or {@link
    * EntityOptions#withProgram} before {@link #spawn(StructuralMeta, String, BehavioralMeta,

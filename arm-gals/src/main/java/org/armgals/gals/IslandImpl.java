@@ -132,24 +132,33 @@ final class IslandImpl implements Island {
   @Override
   public Entity spawn(
       StructuralMeta<?> kind, String name, BehavioralMeta meta, EntityOptions options) {
+    requireNonNull(meta, "meta");
+    return spawnKernelEntity(kind, name, meta, options);
+  }
+
+  @Override
+  public Entity spawn(StructuralMeta<?> kind, String name, EntityOptions options) {
+    return spawnKernelEntity(kind, name, null, options);
+  }
+
+  private Entity spawnKernelEntity(
+      StructuralMeta<?> kind, String name, @Nullable BehavioralMeta meta, EntityOptions options) {
     requireNonNull(kind, "kind");
     requireNonNull(name, "name");
-    requireNonNull(meta, "meta");
     requireNonNull(options, "options");
     synchronized (entities) {
       if (closed) {
         throw new IllegalStateException("island " + this.name + " is closed");
       }
-      return kind.newEntity(
-          name,
-          meta,
+      EntityOptions islands =
           new EntityOptions(
               config,
               options.notification(),
               adaptationPoint,
               options.program(),
               options.lockStep(),
-              options.lockStepTimeout()));
+              options.lockStepTimeout());
+      return meta == null ? kind.newEntity(name, islands) : kind.newEntity(name, meta, islands);
     }
   }
 

@@ -120,4 +120,17 @@ public interface StructuralMeta<S extends State> extends Entity {
    *     Kernel#newStructuralMeta} or {@link Kernel#newBehavioralMeta})
    */
   Entity newEntity(String name, BehavioralMeta meta, EntityOptions options);
+
+  /**
+   * A new instance with no behavioral meta yet, for one of another runtime to take (decision 0024:
+   * {@link BehavioralMeta#addBaseLevelEntity} on a handle from {@link Kernel#lookupRemote}), or one
+   * of this runtime: it notifies no one, and in lock step waits for no one, until a meta takes it.
+   * Unlike {@link #newEntity(String, BehavioralMeta, EntityOptions)} with the basic meta, no local
+   * attachment is on its way when the remote one arrives, so the entity ends with the meta that
+   * took it, whatever the order in which its first release takes the two.
+   *
+   * @throws IllegalArgumentException a blank or taken name
+   * @throws UnsupportedOperationException this structural meta makes meta-entities
+   */
+  Entity newEntity(String name, EntityOptions options);
 }

@@ -227,9 +227,17 @@ final class StructuralMetaImpl<S extends State> extends EntityImpl<FieldState>
   }
 
   @Override
-  public Entity newEntity(String entityName, BehavioralMeta meta, EntityOptions options) {
+  public Entity newEntity(String entityName, EntityOptions options) {
     requireNonNull(options, "options");
-    BehavioralMetaImpl m = kernel.own(meta);
+    checkMakesEntities();
+    return instantiate(
+        entityName,
+        space.initialState(),
+        options,
+        servant -> new PlainEntity<>(kernel, entityName, this, servant));
+  }
+
+  private void checkMakesEntities() {
     if (makes != Makes.ENTITIES) {
       throw new UnsupportedOperationException(
           name()
@@ -237,6 +245,13 @@ final class StructuralMetaImpl<S extends State> extends EntityImpl<FieldState>
               + makes.name().toLowerCase(java.util.Locale.ROOT)
               + "; use Kernel.newStructuralMeta or Kernel.newBehavioralMeta");
     }
+  }
+
+  @Override
+  public Entity newEntity(String entityName, BehavioralMeta meta, EntityOptions options) {
+    requireNonNull(options, "options");
+    BehavioralMetaImpl m = kernel.own(meta);
+    checkMakesEntities();
     PlainEntity<S> e =
         instantiate(
             entityName,

@@ -213,16 +213,39 @@ public abstract class AbstractRobot implements Entity {
    */
   public final void start(
       Island island, StructuralMeta<PState> kind, BehavioralMeta meta, EntityOptions options) {
+    requireNonNull(meta, "meta");
+    start(island, kind, meta, options, true);
+  }
+
+  /**
+   * {@link #start(Island, StructuralMeta, BehavioralMeta, EntityOptions)} with no behavioral meta
+   * yet: a meta of another runtime takes it through the broker (its {@link
+   * BehavioralMeta#addBaseLevelEntity} on a handle of the robot, found by the name the robot's
+   * runtime registered). Until then it notifies no one, and in lock step waits for no one.
+   */
+  public final void start(Island island, StructuralMeta<PState> kind, EntityOptions options) {
+    start(island, kind, null, options, false);
+  }
+
+  private void start(
+      Island island,
+      StructuralMeta<PState> kind,
+      @Nullable BehavioralMeta meta,
+      EntityOptions options,
+      boolean withMeta) {
     requireNonNull(island, "island");
     requireNonNull(kind, "kind");
-    requireNonNull(meta, "meta");
     requireNonNull(options, "options");
     synchronized (hosting) {
       if (entity != null) {
         throw new IllegalStateException("robot " + name + " already runs");
       }
       catalog = kind.behaviors();
-      entity = island.spawn(kind, name, meta, options.withProgram(new KernelHost(this)));
+      EntityOptions withProgram = options.withProgram(new KernelHost(this));
+      entity =
+          withMeta
+              ? island.spawn(kind, name, requireNonNull(meta, "meta"), withProgram)
+              : island.spawn(kind, name, withProgram);
     }
   }
 

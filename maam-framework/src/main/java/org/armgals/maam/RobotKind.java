@@ -288,8 +288,11 @@ public final class RobotKind {
     requireNonNull(connectors, "connectors");
     schemas.forEach(s -> checkName(s, "schema"));
     connectors.forEach(c -> checkName(c, "connector"));
+    Map<String, Object> input = new LinkedHashMap<>();
+    input.put(SCHEMAS, List.copyOf(schemas));
+    input.put(CONNECTORS, List.copyOf(connectors));
     return new Adaptation.ApplyBehavior(
-        SET_SCHEDULING, Map.of(SCHEMAS, List.copyOf(schemas), CONNECTORS, List.copyOf(connectors)));
+        SET_SCHEDULING, java.util.Collections.unmodifiableMap(input));
   }
 
   /**
@@ -356,9 +359,14 @@ public final class RobotKind {
     }
     if (m.get(PARAMETERS) instanceof Map<?, ?> p && !p.isEmpty()) {
       StringBuilder values = new StringBuilder();
-      p.forEach(
-          (k, v) ->
-              values.append(values.isEmpty() ? "" : ", ").append(k).append('=').append(brief(v)));
+      new java.util.TreeMap<Object, Object>(p)
+          .forEach(
+              (k, v) ->
+                  values
+                      .append(values.isEmpty() ? "" : ", ")
+                      .append(k)
+                      .append('=')
+                      .append(brief(v)));
       text.append(" {").append(values).append('}');
     }
     if (m.get(SCHEMAS) != null) {
@@ -385,8 +393,10 @@ public final class RobotKind {
     requireNonNull(parameters, "parameters");
     Map<String, Object> copy = new LinkedHashMap<>();
     parameters.forEach((k, v) -> copy.put(requireNonNull(k, "parameter name"), simple(k, v)));
-    return new Adaptation.ApplyBehavior(
-        behavior, Map.of(NAME, checkName(name, behavior), PARAMETERS, Map.copyOf(copy)));
+    Map<String, Object> input = new LinkedHashMap<>();
+    input.put(NAME, checkName(name, behavior));
+    input.put(PARAMETERS, java.util.Collections.unmodifiableMap(new java.util.TreeMap<>(copy)));
+    return new Adaptation.ApplyBehavior(behavior, java.util.Collections.unmodifiableMap(input));
   }
 
   private static Object simple(String name, Object value) {

@@ -7,6 +7,7 @@ import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -144,9 +145,17 @@ public final class ChildJvm implements AutoCloseable {
    */
   @Override
   public void close() {
+    close(Duration.ofSeconds(10));
+  }
+
+  /**
+   * Stops it: closes its standard input, so that it finishes and exits, waits up to {@code grace},
+   * then kills it. If interrupted, kills it at once and keeps the interrupt status.
+   */
+  public void close(Duration grace) {
     leave();
     try {
-      if (!process.waitFor(10, TimeUnit.SECONDS)) {
+      if (!process.waitFor(grace.toNanos(), TimeUnit.NANOSECONDS)) {
         process.destroyForcibly();
         process.waitFor(10, TimeUnit.SECONDS);
       }

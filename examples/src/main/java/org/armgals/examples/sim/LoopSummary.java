@@ -18,8 +18,16 @@ import org.armgals.examples.cli.Summary;
  */
 record LoopSummary(List<Summary.Entry> entries) {
 
+  /**
+   * @param overruns the adaptation points that overran their cycle's time budget (real time, so not
+   *     in the record)
+   */
   static LoopSummary of(
-      List<Map<String, Object>> loop, boolean hasMeta, RunSettings settings, boolean remote) {
+      List<Map<String, Object>> loop,
+      boolean hasMeta,
+      RunSettings settings,
+      boolean remote,
+      long overruns) {
     List<Summary.Entry> entries = new ArrayList<>();
     if (!hasMeta) {
       entries.add(new Summary.Entry("meta level", "none"));
@@ -36,7 +44,7 @@ record LoopSummary(List<Summary.Entry> entries) {
     Map<String, Long> requestedAt = new HashMap<>();
     List<Long> latencies = new ArrayList<>();
     int passed = 0;
-    int overruns = 0;
+    int changes = 0;
     String lost = null;
     for (Map<String, Object> r : loop) {
       String event = String.valueOf(r.get("event"));
@@ -45,13 +53,17 @@ record LoopSummary(List<Summary.Entry> entries) {
       String key = r.get("robot") + "#" + r.get("version");
       switch (event) {
         case "received" -> passed += Boolean.TRUE.equals(r.get("passed")) ? 1 : 0;
+        case "filter" -> {
+          if (cycle >= 0) {
+            changes++;
+          }
+        }
         case "requested" -> requestedAt.put(key, cycle);
         case "applied", "refused" -> {
           Long at = requestedAt.get(key);
           if (at != null) {
             latencies.add(cycle - at);
           }
-          overruns += Boolean.TRUE.equals(r.get("overrun")) ? 1 : 0;
         }
         case "meta-lost", "free" -> {
           if (lost == null) {
@@ -70,8 +82,7 @@ record LoopSummary(List<Summary.Entry> entries) {
                 + " received, "
                 + passed
                 + " through its filter"));
-    entries.add(
-        new Summary.Entry("filter changes", Integer.toString(count.getOrDefault("filter", 0))));
+    entries.add(new Summary.Entry("filter changes while running", Integer.toString(changes)));
     entries.add(
         new Summary.Entry(
             "requests",

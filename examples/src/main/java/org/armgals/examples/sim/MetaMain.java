@@ -42,7 +42,8 @@ import org.armgals.representation.p.PState;
  * <p>Arguments: see {@link #args}.
  */
 public final class MetaMain {
-  private static final Duration SETTLE = Duration.ofSeconds(30);
+  /** How long it waits, at the end, for the answers to the robots' last instants. */
+  static final Duration SETTLE = Duration.ofSeconds(30);
 
   private MetaMain() {}
 

@@ -24,7 +24,6 @@ import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
 import org.armgals.gals.Island;
 import org.armgals.kernel.AdaptationPoint;
-import org.armgals.kernel.BehavioralMeta;
 import org.armgals.kernel.EntityOptions;
 import org.armgals.kernel.Kernel;
 import org.armgals.kernel.KernelOptions;
@@ -108,7 +107,8 @@ public final class Reflection implements AutoCloseable {
     this.recorder = new LoopRecorder(settings.period().toNanos(), sim::cycle);
     boolean remote = level != null && settings.meta() == RunSettings.MetaPlace.REMOTE;
     String name = example + "-" + ProcessHandle.current().pid() + "-" + RUNS.incrementAndGet();
-    ActiveRuntime.Builder builder = ActiveRuntime.builder().name(name).workers(2).jmx(false);
+    ActiveRuntime.Builder builder =
+        ActiveRuntime.builder().name(name).workers(WORKERS.get()).jmx(false);
     if (remote) {
       JmsTransport t = connect(name);
       transport = t;
@@ -149,6 +149,10 @@ public final class Reflection implements AutoCloseable {
 
   private static final java.util.concurrent.atomic.AtomicInteger RUNS =
       new java.util.concurrent.atomic.AtomicInteger();
+
+  /** The workers of the robots' runtime: 2 (the tests vary it to show they change nothing). */
+  static final java.util.concurrent.atomic.AtomicInteger WORKERS =
+      new java.util.concurrent.atomic.AtomicInteger(2);
 
   /**
    * Opens the reflective side of a run of {@code example} with {@code settings}: in remote mode,
@@ -244,12 +248,15 @@ public final class Reflection implements AutoCloseable {
     if (watcher != null && !settings.realTime()) {
       options = options.withLockStep(1, LOCK_STEP_TIMEOUT);
     }
-    BehavioralMeta meta = watcher != null && !isRemote() ? watcher : kernel.basicBehavioralMeta();
     StructuralMeta<PState> kind =
         kinds.containsKey(name)
             ? kinds.get(name)
             : RobotKind.define(kernel, name + "-kind", robot.observation());
-    robot.start(island, kind, meta, options);
+    if (watcher != null && isRemote()) {
+      robot.start(island, kind, options); // its meta, in another JVM, takes it in ready()
+    } else {
+      robot.start(island, kind, watcher != null ? watcher : kernel.basicBehavioralMeta(), options);
+    }
   }
 
   private boolean isRemote() {
@@ -383,9 +390,9 @@ public final class Reflection implements AutoCloseable {
     } else if (isRemote()) {
       ChildJvm child = requireNonNull(metaJvm, "metaJvm");
       if (!child.ended()) {
-        islandOf.forEach((robot, island) -> child.say(robot + " " + island.instant()));
+        metaOf.keySet().forEach(robot -> child.say(robot + " " + islandOf.get(robot).instant()));
       }
-      child.close();
+      child.close(MetaMain.SETTLE.plusSeconds(10));
       lines.addAll(MetaMain.readLoop(settings.out().resolve(META_LOOP)));
       metaFigures = MetaMain.readFigures(settings.out().resolve(META_FIGURES));
       deleteQuietly(settings.out().resolve(META_LOOP));
@@ -394,7 +401,8 @@ public final class Reflection implements AutoCloseable {
     }
     List<Map<String, Object>> loop = LoopRecorder.merge(lines);
     write(dir.resolve(LOOP), loop);
-    figures.addAll(LoopSummary.of(loop, level != null, settings, isRemote()).entries());
+    figures.addAll(
+        LoopSummary.of(loop, level != null, settings, isRemote(), recorder.overruns()).entries());
     figures.addAll(metaFigures);
     return figures;
   }
