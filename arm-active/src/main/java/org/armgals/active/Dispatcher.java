@@ -44,8 +44,6 @@ final class Dispatcher {
    */
   static final long MIN_SPIN_NANOS = 5_000;
 
-  private static final ThreadLocal<@Nullable Worker> CURRENT_WORKER = new ThreadLocal<>();
-
   /** True on a transport's thread while it queues events and requests from another runtime. */
   private static final ThreadLocal<Boolean> INBOUND = ThreadLocal.withInitial(() -> false);
 
@@ -54,7 +52,7 @@ final class Dispatcher {
    * holds the object this worker woke last: it runs it next, on the same core, unless a spinning
    * worker steals it first (Go's {@code runnext}).
    */
-  private static final class Worker {
+  private static final class Worker extends Carrier {
     final Dispatcher dispatcher;
     volatile @Nullable Thread thread;
     volatile boolean running;
@@ -65,6 +63,13 @@ final class Dispatcher {
 
     /** The length of this worker's last spin that found nothing; the worker's only. */
     long lastFailedSpin = MIN_SPIN_NANOS;
+
+    /**
+     * Whether this worker holds one unit of {@code spinning}: taken while its object lingers for
+     * events, kept when the activation ends into {@link #spin}, which releases it. The worker's
+     * only.
+     */
+    boolean counted;
 
     /** Set by the thread that unparks this worker to hand it work from another runtime. */
     volatile boolean wokenForInbound;
@@ -134,11 +139,11 @@ final class Dispatcher {
    */
   void schedule(Core<?> core) {
     if (terminated) {
-      core.run(); // only stopped objects get here: the activation discards their events
+      Carrier.runByHand(
+          core); // only stopped objects get here: the activation discards their events
       return;
     }
-    Worker w = CURRENT_WORKER.get();
-    if (w != null && w.dispatcher == this) {
+    if (Carrier.current() instanceof Worker w && w.dispatcher == this) {
       Core<?> displaced = (Core<?>) NEXT.getAndSet(w, core);
       if (displaced == null) {
         // No wake-up: this worker runs it next. Waking another one here only made it spin on
@@ -156,18 +161,40 @@ final class Dispatcher {
    * it: the shared queue is empty and the worker's own next slot too. A lingering object gives way
    * to any waiting one; on a thread driving the dispatcher by hand it never lingers.
    */
-  boolean nothingWaiting() {
-    if (!runQueue.isEmpty()) {
-      return false;
+  boolean nothingWaiting(Carrier carrier) {
+    return carrier instanceof Worker w
+        && w.dispatcher == this
+        && w.next == null
+        && runQueue.isEmpty();
+  }
+
+  /**
+   * The calling worker's object lingers for events, watching the run queue: it counts as a spinning
+   * worker (if fewer than the most spinners spin), so that work queued meanwhile wakes no parked
+   * worker; it will take that work itself.
+   */
+  void lingerBegins(Carrier carrier) {
+    if (carrier instanceof Worker w && w.dispatcher == this && !w.counted) {
+      if (spinning.incrementAndGet() > maxSpinners) {
+        spinning.decrementAndGet();
+      } else {
+        w.counted = true;
+      }
     }
-    Worker w = CURRENT_WORKER.get();
-    return w != null && w.dispatcher == this && w.next == null;
+  }
+
+  /** The calling worker's object found events after lingering: it no longer counts as spinning. */
+  void lingerEnds(Carrier carrier) {
+    if (carrier instanceof Worker w && w.counted) {
+      w.counted = false;
+      spinning.decrementAndGet();
+    }
   }
 
   /** Queues an object at the back of the shared queue (an object that used up its batch). */
   void requeue(Core<?> core) {
     if (terminated) {
-      core.run();
+      Carrier.runByHand(core);
       return;
     }
     runQueue.offer(core);
@@ -214,8 +241,8 @@ final class Dispatcher {
    * others and keeps parallelism up.
    */
   static void beforeBlock() {
-    Worker w = CURRENT_WORKER.get();
-    if (w != null) {
+    if (Carrier.current() instanceof Worker w) {
+      w.dispatcher.lingerEnds(w);
       Core<?> n = (Core<?>) NEXT.getAndSet(w, null);
       if (n != null) {
         w.dispatcher.requeue(n);
@@ -226,8 +253,7 @@ final class Dispatcher {
 
   /** The calling thread is back from parking. */
   static void afterBlock() {
-    Worker w = CURRENT_WORKER.get();
-    if (w != null) {
+    if (Carrier.current() instanceof Worker w) {
       w.dispatcher.blocked.decrementAndGet();
     }
   }
@@ -264,7 +290,7 @@ final class Dispatcher {
   }
 
   private void loop(Worker w) {
-    CURRENT_WORKER.set(w);
+    Carrier.install(w);
     boolean retired = false;
     try {
       while (!terminated) {
@@ -275,6 +301,8 @@ final class Dispatcher {
         }
         if (c == null) {
           c = spin(w);
+        } else {
+          lingerEnds(w);
         }
         if (c == null) {
           w.running = false;
@@ -296,7 +324,7 @@ final class Dispatcher {
           continue;
         }
         try {
-          c.run();
+          c.run(w);
         } catch (Throwable t) {
           ActiveRuntimeErrors.throwIfFatal(t);
           LOG.error("activation of {} failed outside its events", c.address(), t);
@@ -304,6 +332,7 @@ final class Dispatcher {
       }
     } finally {
       w.running = false;
+      lingerEnds(w);
       if (!retired && !terminated) {
         // A fatal error ended this worker (it was rethrown, not swallowed): replace it so the
         // runtime keeps its parallelism.
@@ -327,7 +356,9 @@ final class Dispatcher {
   private @Nullable Core<?> spin(Worker self) {
     // At most half the workers spin at a time (Go's rule): more spinners than that only compete
     // for the cores with the threads that do the work.
-    if (spinning.incrementAndGet() > maxSpinners) {
+    if (self.counted) {
+      self.counted = false; // the unit taken while its last object lingered: released below
+    } else if (spinning.incrementAndGet() > maxSpinners) {
       spinning.decrementAndGet();
       return runQueue.poll();
     }
@@ -407,7 +438,7 @@ final class Dispatcher {
     for (; ; ) {
       Core<?> c = runQueue.poll();
       if (c != null) {
-        c.run();
+        Carrier.runByHand(c);
         return true;
       }
       if (runQueue.isEmpty()) {
@@ -432,9 +463,8 @@ final class Dispatcher {
    * shared write per activation); elsewhere (a thread driving the dispatcher by hand) in a shared
    * adder.
    */
-  void countProcessed(int n) {
-    Worker w = CURRENT_WORKER.get();
-    if (w != null && w.dispatcher == this) {
+  void countProcessed(Carrier carrier, int n) {
+    if (carrier instanceof Worker w && w.dispatcher == this) {
       PROCESSED.setRelease(w, w.processed + n);
     } else {
       processedElsewhere.add(n);
@@ -533,7 +563,7 @@ final class Dispatcher {
       }
     }
     for (Core<?> c = runQueue.poll(); c != null; c = runQueue.poll()) {
-      c.run();
+      Carrier.runByHand(c);
     }
   }
 }
