@@ -109,6 +109,12 @@ final class Dispatcher {
    */
   private final ConcurrentLinkedDeque<Worker> idle = new ConcurrentLinkedDeque<>();
 
+  /**
+   * Workers in {@link #parkIdle}, counted before they queue themselves in {@link #idle}: a sender
+   * finds that none is parked with one read, instead of a look into the deque.
+   */
+  private final AtomicInteger parked = new AtomicInteger();
+
   private final Set<Worker> workers = ConcurrentHashMap.newKeySet();
   private volatile Worker[] snapshot = new Worker[0];
   private final AtomicInteger alive = new AtomicInteger();
@@ -206,7 +212,7 @@ final class Dispatcher {
    * stream of messages flows, a worker is nearly always spinning, so this rarely unparks.
    */
   private void wakeIfNoneSpinning() {
-    if (spinning.get() == 0) {
+    if (spinning.get() == 0 && parked.get() > 0) {
       Worker w = idle.pollFirst();
       if (w != null) {
         if (INBOUND.get()) {
@@ -417,13 +423,20 @@ final class Dispatcher {
   }
 
   private void parkIdle(Worker w) {
-    idle.addFirst(w);
-    if (!runQueue.isEmpty() || terminated) {
+    // Counted, then queued, then the run queue checked: a sender queues its object, then reads the
+    // count (both atomic), so either it sees this worker or this worker sees its object.
+    parked.incrementAndGet();
+    try {
+      idle.addFirst(w);
+      if (!runQueue.isEmpty() || terminated) {
+        idle.remove(w);
+        return;
+      }
+      LockSupport.park(this);
       idle.remove(w);
-      return;
+    } finally {
+      parked.decrementAndGet();
     }
-    LockSupport.park(this);
-    idle.remove(w);
   }
 
   // ---------------------------------------------------------------- invoker (STYLE rule 4)
