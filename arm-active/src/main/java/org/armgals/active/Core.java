@@ -7,6 +7,7 @@ import java.lang.invoke.VarHandle;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CountDownLatch;
 import org.jspecify.annotations.Nullable;
 
@@ -36,93 +37,145 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   /** How long, in spins, an activation waits for more events before going idle. */
   static final int LINGER_SPINS = 200;
 
+  /** The longest interval, in spins, between two looks at the buffer while lingering. */
+  static final int LINGER_MAX_INTERVAL = 64;
+
   private static final VarHandle TAIL;
   private static final VarHandle SIZE;
   private static final VarHandle STATE;
-  private static final VarHandle BLOCKED;
-  private static final ThreadLocal<@Nullable Core<?>> CURRENT = new ThreadLocal<>();
+  private static final VarHandle RARE;
 
   static {
     try {
       MethodHandles.Lookup l = MethodHandles.lookup();
-      TAIL = l.findVarHandle(SenderSide.class, "tail", Envelope.class);
+      TAIL = l.findVarHandle(SenderSide.class, "tail", Link.class);
       SIZE = l.findVarHandle(SenderSide.class, "size", int.class);
       STATE = l.findVarHandle(Core.class, "state", int.class);
-      BLOCKED =
-          l.findVarHandle(
-              SenderSidePadding.class, "blocked", java.util.concurrent.ConcurrentLinkedQueue.class);
+      RARE = l.findVarHandle(SenderSidePadding.class, "rare", Rare.class);
     } catch (ReflectiveOperationException e) {
       throw new ExceptionInInitializerError(e);
     }
   }
 
-  final RuntimeImpl runtime;
   private final S servant;
-  private final ObjectConfig config;
-  private final @Nullable LockedBuffer locked;
 
   private volatile int state;
 
-  // consumer only
-  private Envelope head;
-  private @Nullable Envelope deferredHead;
-  private boolean dirty;
-
-  /** The envelope whose guard threw, and what it threw: it fails instead of running. */
-  private @Nullable GuardFailure guardFailure;
+  /** The buffer's first node: the last event taken, or this object itself. Consumer only. */
+  private Link head;
 
   private record GuardFailure(Envelope envelope, Throwable error) {}
 
-  private int taken;
-
-  /** Written by this object's own thread only: numbers what it sends. */
-  private long sendSeq;
-
   /** The state of a synchronous object between its clock's two release phases. */
   static final class Instant {
-    /** The last event linked at the last release: the instant takes it and all before it. */
-    @Nullable Envelope releasedTail;
+    /** The last node linked at the last release: the instant takes it and all before it. */
+    @Nullable Link releasedTail;
 
     /** The instant to run, or last run. */
     long number;
 
     /** Counted down when the object can be released again. */
     @Nullable CountDownLatch done;
+
+    /** Written by this object's own thread only: numbers what it sends. */
+    long sendSeq;
   }
 
-  /** The first node of an empty buffer: it carries no event. */
-  private static final class Stub extends Envelope {
-    @Override
-    boolean processable(Object servant) {
-      return false;
-    }
+  /**
+   * What few objects need, apart from the fields every object has (an idle object costs at most 100
+   * bytes: decision 0045). Made with the object for synchronous and drop-oldest objects, on first
+   * need for the others.
+   */
+  static final class Rare {
+    /** Synchronous mode only: what the clock's release fixed. */
+    final @Nullable Instant instant;
 
-    @Override
-    void process(Core<?> receiver) {
-      throw new IllegalStateException("the buffer's stub is never processed");
+    /** The drop-oldest policy only: the buffer, under a lock. */
+    final @Nullable LockedBuffer locked;
+
+    /** Senders parked by the block policy. */
+    final ConcurrentLinkedQueue<Thread> blocked = new ConcurrentLinkedQueue<>();
+
+    /** The future this object's thread waits on, for wait-for cycle detection. */
+    volatile @Nullable ValueFuture<?> waitingFor;
+
+    // consumer only
+
+    /** The events found not processable, oldest first. */
+    @Nullable Envelope deferredHead;
+
+    @Nullable Envelope deferredTail;
+
+    /** Whether an event was processed since the deferred events were last tried. */
+    boolean dirty;
+
+    /** The envelope whose guard threw, and what it threw: it fails instead of running. */
+    @Nullable GuardFailure guardFailure;
+
+    Rare(@Nullable Instant instant, @Nullable LockedBuffer locked) {
+      this.instant = instant;
+      this.locked = locked;
     }
   }
 
   Core(RuntimeImpl runtime, long id, S servant, ObjectConfig config) {
-    super(id, config.mode() == Mode.SYNCHRONOUS ? new Instant() : null);
-    this.runtime = runtime;
+    super(id, runtime, config);
     this.servant = servant;
-    this.config = config;
-    this.locked =
-        config.overflow() instanceof OverflowPolicy.DropOldest ? new LockedBuffer() : null;
-    Envelope stub = new Stub();
-    this.head = stub;
-    this.tail = stub;
+    boolean sync = config.mode() == Mode.SYNCHRONOUS;
+    boolean dropOldest = config.overflow() instanceof OverflowPolicy.DropOldest;
+    if (sync || dropOldest) {
+      this.rare = new Rare(sync ? new Instant() : null, dropOldest ? new LockedBuffer() : null);
+    }
+    this.head = this;
+    this.tail = this;
+  }
+
+  /** This object's rare fields, made on first need. Any thread. */
+  Rare rare() {
+    Rare r = rare;
+    if (r == null) {
+      RARE.compareAndSet(this, null, new Rare(null, null));
+      r = java.util.Objects.requireNonNull(rare);
+    }
+    return r;
+  }
+
+  private @Nullable LockedBuffer locked() {
+    Rare r = rare;
+    return r == null ? null : r.locked;
+  }
+
+  private @Nullable Instant instant() {
+    Rare r = rare;
+    return r == null ? null : r.instant;
+  }
+
+  /** The future this object's thread waits on, or null. */
+  @Nullable ValueFuture<?> waitingFor() {
+    Rare r = rare;
+    return r == null ? null : r.waitingFor;
+  }
+
+  /** Records the future this object's thread waits on (null: none). Its own thread only. */
+  void waitingFor(@Nullable ValueFuture<?> future) {
+    if (future != null) {
+      rare().waitingFor = future;
+    } else {
+      Rare r = rare;
+      if (r != null) {
+        r.waitingFor = null;
+      }
+    }
   }
 
   /** The instant a synchronous object is running or last ran; 0 before its first. */
   long currentInstant() {
-    Instant i = instant;
+    Instant i = instant();
     return i == null ? 0 : i.number;
   }
 
   static @Nullable Core<?> current() {
-    return CURRENT.get();
+    return Carrier.running();
   }
 
   S servant() {
@@ -153,7 +206,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
 
   @Override
   public int queueDepth() {
-    LockedBuffer lb = locked;
+    LockedBuffer lb = locked();
     return lb != null ? lb.size() : size;
   }
 
@@ -269,21 +322,25 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   }
 
   private <R extends @Nullable Object> ReplyFuture<R> newFuture() {
-    Core<?> sender = CURRENT.get();
-    if (sender != null && sender.config.mode() == Mode.SYNCHRONOUS) {
-      return new SyncFuture<>(sender, address(), sender.sendSeq + 1);
+    Core<?> sender = Carrier.running();
+    Instant i = sender == null ? null : sender.instant();
+    if (sender != null && i != null) {
+      return new SyncFuture<>(sender, address(), i.sendSeq + 1);
     }
     return new ValueFuture<>(this);
   }
 
   /** Routes an envelope from the calling thread's object (if any) to this object. */
   void post(Envelope e) {
-    Core<?> sender = CURRENT.get();
+    Core<?> sender = Carrier.running();
     Address from = null;
     long seq = 0;
     if (sender != null) {
       from = sender.address();
-      seq = ++sender.sendSeq;
+      Instant i = sender.instant();
+      if (i != null) {
+        seq = ++i.sendSeq;
+      }
     }
     if (!e.bind(from, this, seq)) {
       throw new IllegalArgumentException("this request was already sent once: " + e);
@@ -297,7 +354,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       runtime.countRejected();
       throw new ObjectStoppedException(address());
     }
-    LockedBuffer lb = locked;
+    LockedBuffer lb = locked();
     if (lb != null) {
       Envelope dropped = lb.offer(e, config.capacity());
       if (dropped != null) {
@@ -310,7 +367,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       if (e.privileged()) {
         SIZE.getAndAdd(this, 1);
       }
-      Envelope prev = (Envelope) TAIL.getAndSet(this, e);
+      Link prev = (Link) TAIL.getAndSet(this, e);
       prev.setNext(e);
     }
     if (config.mode() == Mode.ASYNCHRONOUS || (state & STOPPED) != 0) {
@@ -389,9 +446,16 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
 
   // ---------------------------------------------------------------- consuming
 
-  /** One activation, on a worker thread: the object holds {@link #SCHEDULED}. */
-  void run() {
-    CURRENT.set(this);
+  /**
+   * One activation, on {@code carrier}'s thread: the object holds {@link #SCHEDULED}. An
+   * asynchronous object processes {@link #BATCH} events, then goes on with another batch if no
+   * other object waits for a worker, or goes back to the run queue if one does.
+   */
+  void run(Carrier carrier) {
+    Core<?> outer = carrier.running; // a shutdown may run a stopped object inside an activation
+    int outerTaken = carrier.taken;
+    carrier.running = this;
+    carrier.taken = 0;
     int processed = 0;
     boolean more = false;
     CountDownLatch released = null;
@@ -399,34 +463,47 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       if ((state & STOPPED) != 0) {
         cancelQueued();
       } else if (config.mode() == Mode.SYNCHRONOUS) {
-        Instant i = java.util.Objects.requireNonNull(instant);
+        Instant i = java.util.Objects.requireNonNull(instant());
         released = i.done;
         i.done = null;
-        processed = runInstant();
+        processed = runInstant(carrier);
       } else {
+        Dispatcher dispatcher = runtime.dispatcher();
         int linger = LINGER_SPINS;
-        while (processed < BATCH && (state & STOPPED) == 0) {
+        int budget = BATCH;
+        while ((state & STOPPED) == 0) {
+          if (budget == 0) {
+            if (!dispatcher.nothingWaiting(carrier)) {
+              more = true;
+              break;
+            }
+            runtime.countProcessed(carrier, processed);
+            processed = 0;
+            budget = BATCH;
+          }
           Envelope e = takeProcessable();
           if (e == null) {
-            linger = lingerForEvents(linger);
+            linger = lingerForEvents(carrier, linger);
             if (linger < 0) {
               break;
             }
             continue;
           }
-          processOne(e);
+          processOne(carrier, e);
           processed++;
+          budget--;
         }
-        more = processed == BATCH;
       }
     } finally {
-      returnTaken();
-      CURRENT.remove();
-      runtime.countProcessed(processed);
+      returnTaken(carrier);
+      carrier.running = outer;
+      carrier.taken = outerTaken;
+      runtime.countProcessed(carrier, processed);
       if (more) {
         runtime.dispatcher().requeue(this); // fairness: the back of the shared queue
       } else {
         roomMade();
+        restub();
         STATE.getAndBitwiseAnd(this, ~SCHEDULED);
       }
       // The instant ends only once the object can be released again.
@@ -445,17 +522,47 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
    *
    * @return the spins left, or -1 to go idle
    */
-  private int lingerForEvents(int spins) {
-    returnTaken(); // while it lingers, the object's count of queued events is exact
-    LockedBuffer lb = locked;
-    while (spins > 0 && runtime.dispatcher().nothingWaiting()) {
-      spins--;
-      Thread.onSpinWait();
+  private int lingerForEvents(Carrier carrier, int spins) {
+    returnTaken(carrier); // while it lingers, the object's count of queued events is exact
+    LockedBuffer lb = locked();
+    Dispatcher dispatcher = runtime.dispatcher();
+    // The lingering worker watches the run queue too (nothingWaiting), so it counts as a spinning
+    // worker: a sender that schedules another object meanwhile wakes no parked worker for it.
+    dispatcher.lingerBegins(carrier);
+    // The buffer's last link is the line the sender writes on every send: read it at growing
+    // intervals (1, 2, 4 ... 64 spins), so that a sender streaming to this object mostly writes a
+    // line this core does not hold, and the events that came meanwhile are taken in one go.
+    int wait = 1;
+    while (spins > 0 && dispatcher.nothingWaiting(carrier)) {
+      for (int i = 0; i < wait; i++) {
+        Thread.onSpinWait();
+      }
+      spins -= wait;
+      wait = Math.min(wait << 1, LINGER_MAX_INTERVAL);
       if (lb != null ? lb.hasUnseen() : head.next() != null) {
-        return spins;
+        dispatcher.lingerEnds(carrier);
+        return Math.max(spins, 0);
       }
     }
-    return -1;
+    return -1; // the worker keeps counting as spinning: it goes on to poll the run queue
+  }
+
+  /**
+   * Going idle with an empty buffer: this object becomes its buffer's first node again, so that an
+   * idle object keeps no envelope alive (an envelope is 40 to 48 bytes, half an idle object's
+   * budget). One compare-and-set per activation that empties the buffer; a sender that linked an
+   * event meanwhile makes it fail, and the event's predecessor stays first. Consumer only.
+   */
+  private void restub() {
+    Link h = head;
+    if (h == this || config.mode() != Mode.ASYNCHRONOUS || h.next() != null) {
+      return;
+    }
+    // This object left the chain when its successor was taken: no sender links to it any more.
+    setNext(null);
+    if (TAIL.compareAndSet(this, h, this)) {
+      head = this;
+    }
   }
 
   /** After an activation: is there something the idle object must still do? */
@@ -467,7 +574,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
     if (config.mode() == Mode.SYNCHRONOUS) {
       return false;
     }
-    LockedBuffer lb = locked;
+    LockedBuffer lb = locked();
     return lb != null ? lb.hasUnseen() : tail != head;
   }
 
@@ -480,19 +587,30 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
     return Math.max(1, Math.min(64, config.capacity() >> 6));
   }
 
-  private void taken() {
-    if (locked == null && ++taken >= takenBatch()) {
-      returnTaken();
+  private void taken(Carrier carrier) {
+    if (++carrier.taken >= takenBatch() && locked() == null) {
+      returnTaken(carrier);
+    }
+  }
+
+  /**
+   * Returns the places of the events this object's activation has taken so far, if the calling
+   * thread is running it (before it parks in a wait by necessity, so its buffer's count is exact).
+   */
+  void returnTaken() {
+    Carrier c = Carrier.current();
+    if (c != null && c.running == this) {
+      returnTaken(c);
     }
   }
 
   /** Returns the places of the events taken so far. Consumer only. */
-  void returnTaken() {
-    int t = taken;
+  private void returnTaken(Carrier carrier) {
+    int t = carrier.taken;
     if (t == 0) {
       return;
     }
-    taken = 0;
+    carrier.taken = 0;
     int left = (int) SIZE.getAndAdd(this, -t) - t;
     // Wake blocked senders at half capacity, not for every place: a park and an unpark per event
     // would make a full buffer far slower than a half-empty one.
@@ -501,12 +619,13 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
     }
   }
 
-  private void processOne(Envelope e) {
-    taken();
+  private void processOne(Carrier carrier, Envelope e) {
+    taken(carrier);
     try {
-      GuardFailure g = guardFailure;
+      Rare r = rare;
+      GuardFailure g = r == null ? null : r.guardFailure;
       if (g != null && g.envelope() == e) {
-        guardFailure = null;
+        r.guardFailure = null;
         throw new IllegalStateException("the guard of " + e + " threw " + g.error(), g.error());
       }
       e.process(this);
@@ -515,30 +634,36 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       e.failed(t);
       runtime.reportFailure(this, e.event(), t);
     } finally {
-      dirty = true;
+      Rare r = rare;
+      if (r != null) {
+        r.dirty = true;
+      }
       e.clear();
     }
   }
 
   /** The oldest processable event, or null if none; consumer only. */
   private @Nullable Envelope takeProcessable() {
-    LockedBuffer lb = locked;
-    if (lb != null) {
-      Envelope e = lb.takeProcessable(this, dirty);
-      dirty = false;
-      return e;
-    }
-    if (deferredHead != null && dirty) {
-      dirty = false;
-      Envelope prev = null;
-      for (Envelope d = deferredHead; d != null; prev = d, d = d.deferredNext) {
-        if (processableSafely(d)) {
-          unlinkDeferred(prev, d);
-          return d;
+    Rare r = rare;
+    if (r != null) {
+      LockedBuffer lb = r.locked;
+      if (lb != null) {
+        Envelope e = lb.takeProcessable(this, r.dirty);
+        r.dirty = false;
+        return e;
+      }
+      if (r.deferredHead != null && r.dirty) {
+        r.dirty = false;
+        Envelope prev = null;
+        for (Envelope d = r.deferredHead; d != null; prev = d, d = d.deferredNext) {
+          if (processableSafely(d)) {
+            unlinkDeferred(r, prev, d);
+            return d;
+          }
         }
       }
+      r.dirty = false;
     }
-    dirty = false;
     for (; ; ) {
       Envelope e = pollInbox();
       if (e == null) {
@@ -557,7 +682,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
     } catch (Throwable t) {
       ActiveRuntimeErrors.throwIfFatal(t);
       // A guard that throws makes its event fail (without running) rather than block the buffer.
-      guardFailure = new GuardFailure(e, t);
+      rare().guardFailure = new GuardFailure(e, t);
       return true;
     }
   }
@@ -569,17 +694,17 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
    * reads the tail, so it is never lost).
    */
   private @Nullable Envelope pollInbox() {
-    Envelope n = head.next();
+    Link n = head.next();
     if (n != null) {
       head = n;
     }
-    return n;
+    return (Envelope) n; // this object is only ever the first node, never a linked one
   }
 
   /** As {@link #pollInbox()}, but waits for a link in progress (all events up to the tail). */
   private @Nullable Envelope pollInboxToTail() {
-    Envelope h = head;
-    Envelope n = h.next();
+    Link h = head;
+    Link n = h.next();
     if (n == null) {
       if (h == tail) {
         return null;
@@ -589,28 +714,30 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       }
     }
     head = n;
-    return n;
+    return (Envelope) n;
   }
 
   private void appendDeferred(Envelope e) {
+    Rare r = rare();
     e.deferredNext = null;
-    if (deferredTail == null) {
-      deferredHead = e;
+    Envelope t = r.deferredTail;
+    if (t == null) {
+      r.deferredHead = e;
     } else {
-      deferredTail.deferredNext = e;
+      t.deferredNext = e;
     }
-    deferredTail = e;
+    r.deferredTail = e;
   }
 
-  private void unlinkDeferred(@Nullable Envelope prev, Envelope d) {
+  private static void unlinkDeferred(Rare r, @Nullable Envelope prev, Envelope d) {
     Envelope next = d.deferredNext;
     if (prev == null) {
-      deferredHead = next;
+      r.deferredHead = next;
     } else {
       prev.deferredNext = next;
     }
-    if (deferredTail == d) {
-      deferredTail = prev;
+    if (r.deferredTail == d) {
+      r.deferredTail = prev;
     }
     d.deferredNext = null;
   }
@@ -619,7 +746,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   private void cancelQueued() {
     ObjectStoppedException stopped = new ObjectStoppedException(address());
     List<Envelope> all = new ArrayList<>();
-    LockedBuffer lb = locked;
+    LockedBuffer lb = locked();
     if (lb != null) {
       lb.drainTo(all);
     } else {
@@ -640,31 +767,33 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
 
   /** Moves the deferred events, oldest first, into {@code into}; the deferred list is empty. */
   private void takeDeferred(List<Envelope> into) {
-    for (Envelope d = deferredHead; d != null; d = d.deferredNext) {
+    Rare r = rare;
+    if (r == null) {
+      return;
+    }
+    for (Envelope d = r.deferredHead; d != null; d = d.deferredNext) {
       into.add(d);
     }
-    deferredHead = null;
-    deferredTail = null;
+    r.deferredHead = null;
+    r.deferredTail = null;
   }
 
   // ---------------------------------------------------------------- blocked senders
 
   /** Parks the sender until there may be room, the object stopped, or the deadline passed. */
   private boolean awaitRoom(long deadline) {
-    Core<?> sender = CURRENT.get();
+    Core<?> sender = Carrier.running();
     if (sender != null) {
       sender.returnTaken();
     }
-    var q = blocked;
-    if (q == null) {
-      BLOCKED.compareAndSet(this, null, new java.util.concurrent.ConcurrentLinkedQueue<Thread>());
-      q = blocked;
-    }
+    var q = rare().blocked;
     Thread me = Thread.currentThread();
-    q.add(me);
     Dispatcher.beforeBlock();
     try {
       for (; ; ) {
+        // Queued before the check: a consumer that makes room after the check sees it and wakes
+        // it (it takes the queue's senders when it wakes them).
+        q.add(me);
         if (size < config.capacity() || (state & STOPPED) != 0) {
           return true;
         }
@@ -673,6 +802,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
           return false;
         }
         java.util.concurrent.locks.LockSupport.parkNanos(this, remaining);
+        q.remove(me);
         if (Thread.interrupted()) {
           me.interrupt();
           runtime.countRejected();
@@ -686,11 +816,16 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
     }
   }
 
-  /** Wakes the blocked senders, if any, after the buffer made room. */
+  /**
+   * Wakes the blocked senders, if any, after the buffer made room, and takes them out of the queue:
+   * a sender that finds the buffer still full queues itself again, so while nobody waits this is
+   * one read of an empty queue.
+   */
   private void roomMade() {
-    var q = blocked;
-    if (q != null) {
-      for (Thread t : q) {
+    Rare r = rare;
+    if (r != null) {
+      var q = r.blocked;
+      for (Thread t = q.poll(); t != null; t = q.poll()) {
         java.util.concurrent.locks.LockSupport.unpark(t);
       }
     }
@@ -700,13 +835,13 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
 
   /** Clock, phase 1 of a release: fixes which events belong to this instant. */
   void beginInstant() {
-    LockedBuffer lb = locked;
+    LockedBuffer lb = locked();
     if (lb != null) {
       lb.markRelease();
     } else {
       // The last node linked now: events whose place was reserved but that are not linked yet
       // were sent at the same time as the release, and belong to the next instant.
-      java.util.Objects.requireNonNull(instant).releasedTail = tail;
+      java.util.Objects.requireNonNull(instant()).releasedTail = tail;
     }
   }
 
@@ -718,7 +853,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
         return false;
       }
       if (STATE.compareAndSet(this, 0, SCHEDULED)) {
-        Instant i = java.util.Objects.requireNonNull(this.instant);
+        Instant i = java.util.Objects.requireNonNull(instant());
         i.number = instant;
         i.done = done;
         runtime.dispatcher().schedule(this);
@@ -733,7 +868,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
           .thenComparingLong(e -> e.seq);
 
   /** Retries skipped events oldest first, restarting after each one processed. */
-  private int retrySkipped(List<Envelope> skipped) {
+  private int retrySkipped(Carrier carrier, List<Envelope> skipped) {
     int processed = 0;
     boolean progress = true;
     while (progress && (state & STOPPED) == 0) {
@@ -742,7 +877,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
         Envelope e = skipped.get(i);
         if (processableSafely(e)) {
           skipped.remove(i);
-          processOne(e);
+          processOne(carrier, e);
           processed++;
           progress = true;
           break;
@@ -753,14 +888,14 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   }
 
   /** Takes every event waiting at the release, in a deterministic order, then the cycle. */
-  private int runInstant() {
+  private int runInstant(Carrier carrier) {
     List<Envelope> batch = new ArrayList<>();
-    LockedBuffer lb = locked;
+    LockedBuffer lb = locked();
     if (lb != null) {
       lb.takeReleased(batch);
     } else {
       takeDeferred(batch);
-      Envelope last = java.util.Objects.requireNonNull(instant).releasedTail;
+      Link last = java.util.Objects.requireNonNull(instant()).releasedTail;
       if (last != null && last != head) {
         for (Envelope e = pollInboxToTail(); e != null; e = pollInboxToTail()) {
           batch.add(e);
@@ -771,10 +906,10 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       }
     }
     batch.sort(INSTANT_ORDER);
-    int processed = processInstant(batch, lb);
+    int processed = processInstant(carrier, batch, lb);
     if (servant instanceof ReactiveCycle rc && (state & STOPPED) == 0) {
       try {
-        rc.onCycle(java.util.Objects.requireNonNull(instant).number);
+        rc.onCycle(java.util.Objects.requireNonNull(instant()).number);
       } catch (Throwable t) {
         ActiveRuntimeErrors.throwIfFatal(t);
         runtime.reportFailure(this, null, t);
@@ -788,7 +923,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
    * (a state change) the events skipped so far are retried, oldest first, before newer ones. What
    * stays unprocessable waits for a later instant.
    */
-  private int processInstant(List<Envelope> batch, @Nullable LockedBuffer lb) {
+  private int processInstant(Carrier carrier, List<Envelope> batch, @Nullable LockedBuffer lb) {
     int processed = 0;
     List<Envelope> skipped = new ArrayList<>();
     for (int i = 0; i < batch.size(); i++) {
@@ -802,9 +937,9 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
         skipped.add(e);
         continue;
       }
-      processOne(e);
+      processOne(carrier, e);
       processed++;
-      processed += retrySkipped(skipped);
+      processed += retrySkipped(carrier, skipped);
     }
     if (lb != null) {
       lb.putBack(skipped);

@@ -44,7 +44,15 @@ final class Dispatcher {
    */
   static final long MIN_SPIN_NANOS = 5_000;
 
-  private static final ThreadLocal<@Nullable Worker> CURRENT_WORKER = new ThreadLocal<>();
+  /** A worker handing objects to itself reads the clock once per this many + 1 hand-overs. */
+  static final int HANDOFF_CHECK_MASK = 63;
+
+  /**
+   * The shortest time between two wake-ups for hand-overs by one worker: on a quiet machine it
+   * costs at most one wake-up and one short spin per 100 µs of a chain of hand-overs; on a loaded
+   * one it keeps a second worker ready to take the chain over (decision 0046).
+   */
+  static final long HANDOFF_WAKE_NANOS = 100_000;
 
   /** True on a transport's thread while it queues events and requests from another runtime. */
   private static final ThreadLocal<Boolean> INBOUND = ThreadLocal.withInitial(() -> false);
@@ -54,7 +62,7 @@ final class Dispatcher {
    * holds the object this worker woke last: it runs it next, on the same core, unless a spinning
    * worker steals it first (Go's {@code runnext}).
    */
-  private static final class Worker {
+  private static final class Worker extends Carrier {
     final Dispatcher dispatcher;
     volatile @Nullable Thread thread;
     volatile boolean running;
@@ -66,11 +74,24 @@ final class Dispatcher {
     /** The length of this worker's last spin that found nothing; the worker's only. */
     long lastFailedSpin = MIN_SPIN_NANOS;
 
+    /**
+     * Whether this worker holds one unit of {@code spinning}: taken while its object lingers for
+     * events, kept when the activation ends into {@link #spin}, which releases it. The worker's
+     * only.
+     */
+    boolean counted;
+
     /** Set by the thread that unparks this worker to hand it work from another runtime. */
     volatile boolean wokenForInbound;
 
     /** Events processed by this worker: written by it only (release), summed by stats. */
     volatile long processed;
+
+    /** Objects this worker handed to itself through {@code next}; the worker's only. */
+    int handoffs;
+
+    /** When this worker last woke another for its hand-overs; the worker's only. */
+    long handoffWakeAt;
 
     Worker(Dispatcher dispatcher) {
       this.dispatcher = dispatcher;
@@ -104,6 +125,12 @@ final class Dispatcher {
    */
   private final ConcurrentLinkedDeque<Worker> idle = new ConcurrentLinkedDeque<>();
 
+  /**
+   * Workers in {@link #parkIdle}, counted before they queue themselves in {@link #idle}: a sender
+   * finds that none is parked with one read, instead of a look into the deque.
+   */
+  private final AtomicInteger parked = new AtomicInteger();
+
   private final Set<Worker> workers = ConcurrentHashMap.newKeySet();
   private volatile Worker[] snapshot = new Worker[0];
   private final AtomicInteger alive = new AtomicInteger();
@@ -134,16 +161,26 @@ final class Dispatcher {
    */
   void schedule(Core<?> core) {
     if (terminated) {
-      core.run(); // only stopped objects get here: the activation discards their events
+      Carrier.runByHand(
+          core); // only stopped objects get here: the activation discards their events
       return;
     }
-    Worker w = CURRENT_WORKER.get();
-    if (w != null && w.dispatcher == this) {
+    if (Carrier.current() instanceof Worker w && w.dispatcher == this) {
       Core<?> displaced = (Core<?>) NEXT.getAndSet(w, core);
       if (displaced == null) {
         // No wake-up: this worker runs it next. Waking another one here only made it spin on
         // this slot (measured: thread ring and ping-pong 40-65% faster without). A spinning
-        // worker still steals it, and a worker about to block hands it over.
+        // worker still steals it, and a worker about to block hands it over. But at most once
+        // per HANDOFF_WAKE_NANOS of hand-overs a parked worker is woken: it spins and steals the
+        // slot if this worker's thread has lost its core meanwhile (a loaded machine), so that a
+        // chain of hand-overs does not wait for one descheduled thread while another could run.
+        if ((++w.handoffs & HANDOFF_CHECK_MASK) == 0) {
+          long now = runtime.timeSource().nanoTime();
+          if (now - w.handoffWakeAt >= HANDOFF_WAKE_NANOS) {
+            w.handoffWakeAt = now;
+            wakeIfNoneSpinning();
+          }
+        }
         return;
       }
       core = displaced;
@@ -156,18 +193,40 @@ final class Dispatcher {
    * it: the shared queue is empty and the worker's own next slot too. A lingering object gives way
    * to any waiting one; on a thread driving the dispatcher by hand it never lingers.
    */
-  boolean nothingWaiting() {
-    if (!runQueue.isEmpty()) {
-      return false;
+  boolean nothingWaiting(Carrier carrier) {
+    return carrier instanceof Worker w
+        && w.dispatcher == this
+        && w.next == null
+        && runQueue.isEmpty();
+  }
+
+  /**
+   * The calling worker's object lingers for events, watching the run queue: it counts as a spinning
+   * worker (if fewer than the most spinners spin), so that work queued meanwhile wakes no parked
+   * worker; it will take that work itself.
+   */
+  void lingerBegins(Carrier carrier) {
+    if (carrier instanceof Worker w && w.dispatcher == this && !w.counted) {
+      if (spinning.incrementAndGet() > maxSpinners) {
+        spinning.decrementAndGet();
+      } else {
+        w.counted = true;
+      }
     }
-    Worker w = CURRENT_WORKER.get();
-    return w != null && w.dispatcher == this && w.next == null;
+  }
+
+  /** The calling worker's object found events after lingering: it no longer counts as spinning. */
+  void lingerEnds(Carrier carrier) {
+    if (carrier instanceof Worker w && w.counted) {
+      w.counted = false;
+      spinning.decrementAndGet();
+    }
   }
 
   /** Queues an object at the back of the shared queue (an object that used up its batch). */
   void requeue(Core<?> core) {
     if (terminated) {
-      core.run();
+      Carrier.runByHand(core);
       return;
     }
     runQueue.offer(core);
@@ -179,7 +238,7 @@ final class Dispatcher {
    * stream of messages flows, a worker is nearly always spinning, so this rarely unparks.
    */
   private void wakeIfNoneSpinning() {
-    if (spinning.get() == 0) {
+    if (spinning.get() == 0 && parked.get() > 0) {
       Worker w = idle.pollFirst();
       if (w != null) {
         if (INBOUND.get()) {
@@ -214,8 +273,8 @@ final class Dispatcher {
    * others and keeps parallelism up.
    */
   static void beforeBlock() {
-    Worker w = CURRENT_WORKER.get();
-    if (w != null) {
+    if (Carrier.current() instanceof Worker w) {
+      w.dispatcher.lingerEnds(w);
       Core<?> n = (Core<?>) NEXT.getAndSet(w, null);
       if (n != null) {
         w.dispatcher.requeue(n);
@@ -226,8 +285,7 @@ final class Dispatcher {
 
   /** The calling thread is back from parking. */
   static void afterBlock() {
-    Worker w = CURRENT_WORKER.get();
-    if (w != null) {
+    if (Carrier.current() instanceof Worker w) {
       w.dispatcher.blocked.decrementAndGet();
     }
   }
@@ -264,7 +322,7 @@ final class Dispatcher {
   }
 
   private void loop(Worker w) {
-    CURRENT_WORKER.set(w);
+    Carrier.install(w);
     boolean retired = false;
     try {
       while (!terminated) {
@@ -275,6 +333,8 @@ final class Dispatcher {
         }
         if (c == null) {
           c = spin(w);
+        } else {
+          lingerEnds(w);
         }
         if (c == null) {
           w.running = false;
@@ -296,7 +356,7 @@ final class Dispatcher {
           continue;
         }
         try {
-          c.run();
+          c.run(w);
         } catch (Throwable t) {
           ActiveRuntimeErrors.throwIfFatal(t);
           LOG.error("activation of {} failed outside its events", c.address(), t);
@@ -304,6 +364,7 @@ final class Dispatcher {
       }
     } finally {
       w.running = false;
+      lingerEnds(w);
       if (!retired && !terminated) {
         // A fatal error ended this worker (it was rethrown, not swallowed): replace it so the
         // runtime keeps its parallelism.
@@ -327,7 +388,9 @@ final class Dispatcher {
   private @Nullable Core<?> spin(Worker self) {
     // At most half the workers spin at a time (Go's rule): more spinners than that only compete
     // for the cores with the threads that do the work.
-    if (spinning.incrementAndGet() > maxSpinners) {
+    if (self.counted) {
+      self.counted = false; // the unit taken while its last object lingered: released below
+    } else if (spinning.incrementAndGet() > maxSpinners) {
       spinning.decrementAndGet();
       return runQueue.poll();
     }
@@ -386,13 +449,20 @@ final class Dispatcher {
   }
 
   private void parkIdle(Worker w) {
-    idle.addFirst(w);
-    if (!runQueue.isEmpty() || terminated) {
+    // Counted, then queued, then the run queue checked: a sender queues its object, then reads the
+    // count (both atomic), so either it sees this worker or this worker sees its object.
+    parked.incrementAndGet();
+    try {
+      idle.addFirst(w);
+      if (!runQueue.isEmpty() || terminated) {
+        idle.remove(w);
+        return;
+      }
+      LockSupport.park(this);
       idle.remove(w);
-      return;
+    } finally {
+      parked.decrementAndGet();
     }
-    LockSupport.park(this);
-    idle.remove(w);
   }
 
   // ---------------------------------------------------------------- invoker (STYLE rule 4)
@@ -407,7 +477,7 @@ final class Dispatcher {
     for (; ; ) {
       Core<?> c = runQueue.poll();
       if (c != null) {
-        c.run();
+        Carrier.runByHand(c);
         return true;
       }
       if (runQueue.isEmpty()) {
@@ -432,9 +502,8 @@ final class Dispatcher {
    * shared write per activation); elsewhere (a thread driving the dispatcher by hand) in a shared
    * adder.
    */
-  void countProcessed(int n) {
-    Worker w = CURRENT_WORKER.get();
-    if (w != null && w.dispatcher == this) {
+  void countProcessed(Carrier carrier, int n) {
+    if (carrier instanceof Worker w && w.dispatcher == this) {
       PROCESSED.setRelease(w, w.processed + n);
     } else {
       processedElsewhere.add(n);
@@ -533,7 +602,7 @@ final class Dispatcher {
       }
     }
     for (Core<?> c = runQueue.poll(); c != null; c = runQueue.poll()) {
-      c.run();
+      Carrier.runByHand(c);
     }
   }
 }

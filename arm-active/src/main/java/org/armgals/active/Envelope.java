@@ -1,7 +1,5 @@
 package org.armgals.active;
 
-import java.lang.invoke.MethodHandles;
-import java.lang.invoke.VarHandle;
 import org.jspecify.annotations.Nullable;
 
 /**
@@ -9,43 +7,25 @@ import org.jspecify.annotations.Nullable;
  * as exactly one envelope: method requests are their own envelopes (no extra allocation), data
  * events are wrapped.
  *
- * <p>{@link #next} is written by producers (release) and read by the consumer (acquire); the other
- * fields are written before the envelope is published by the enqueue and read only by the receiving
- * object.
+ * <p>Its link ({@link Link}) is written by producers and read by the consumer; the other fields are
+ * written before the envelope is published by the enqueue and read only by the receiving object.
  */
-abstract class Envelope implements Event {
-  private static final VarHandle NEXT;
-
-  static {
-    try {
-      NEXT = MethodHandles.lookup().findVarHandle(Envelope.class, "next", Envelope.class);
-    } catch (ReflectiveOperationException e) {
-      throw new ExceptionInInitializerError(e);
-    }
-  }
-
-  @SuppressWarnings("unused") // accessed through NEXT
-  private volatile @Nullable Envelope next;
-
+abstract class Envelope extends Link implements Event {
   /** The sending object's address; null from outside any object. */
   @Nullable Address from;
 
   /** The receiving object; set when sent. */
   @Nullable Core<?> to;
 
-  /** The sender's send counter when sent: orders a synchronous instant deterministically. */
+  /**
+   * A synchronous sender's send counter when sent, 0 from any other sender: orders a synchronous
+   * instant deterministically (events of one asynchronous sender arrive in the order it sent them,
+   * and the instant's order is stable).
+   */
   long seq;
 
   /** The link of the receiver's private list of deferred (not yet processable) events. */
   @Nullable Envelope deferredNext;
-
-  final @Nullable Envelope next() {
-    return (Envelope) NEXT.getAcquire(this);
-  }
-
-  final void setNext(@Nullable Envelope n) {
-    NEXT.setRelease(this, n);
-  }
 
   /** Binds the envelope to its route; false if it was already sent once. */
   final boolean bind(@Nullable Address sender, Core<?> receiver, long sequence) {

@@ -2,75 +2,95 @@ package org.armgals.active;
 
 import java.lang.invoke.MethodHandles;
 import java.lang.invoke.VarHandle;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.LongAdder;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Consumer;
 import org.jspecify.annotations.Nullable;
 
 /**
  * The live objects of a runtime, indexed by object number: chunks of {@link #CHUNK} slots, so an
- * object costs one reference here (a hash map entry and its boxed key would cost about 56 bytes, a
- * quarter of the idle-object budget). A chunk whose objects have all been numbered and have all
- * stopped is freed.
+ * object costs one reference here (a hash map entry and its boxed key would cost about 56 bytes,
+ * more than half of an idle object's budget). A chunk is freed once every number in it has been
+ * handed out and every object numbered in it has been removed.
  *
- * <p>Lookups are lock-free (an acquire read of the slot); numbering, insertion and removal take a
- * lock, uncontended in practice.
+ * <p>Numbering, insertion, removal and lookups are lock-free: a number is one atomic increment, a
+ * slot is set by a release store and cleared by a compare-and-set, and each chunk counts its
+ * removals. Only making a chunk, growing the array of chunks and freeing a chunk take a lock, once
+ * per {@link #CHUNK} objects (an object created and stopped per message, as in a creation workload,
+ * made the lock per object contended: the creator and the stopping objects run on different
+ * workers).
  */
 final class ObjectTable {
   static final int CHUNK = 1024;
   private static final VarHandle SLOT = MethodHandles.arrayElementVarHandle(Core[].class);
+  private static final VarHandle GONE;
+
+  static {
+    try {
+      GONE = MethodHandles.lookup().findVarHandle(Chunk.class, "gone", int.class);
+    } catch (ReflectiveOperationException e) {
+      throw new ExceptionInInitializerError(e);
+    }
+  }
+
+  /** {@link #CHUNK} slots and how many of their objects have been removed. */
+  private static final class Chunk {
+    final @Nullable Core<?>[] slots = new Core<?>[CHUNK];
+
+    @SuppressWarnings("unused") // accessed through GONE
+    volatile int gone;
+  }
 
   private final ReentrantLock lock = new ReentrantLock();
-  private volatile @Nullable Core<?>[][] chunks = new Core<?>[0][];
-  private int[] live = new int[0];
-  private long lastId;
-  private volatile long count;
+  private volatile @Nullable Chunk[] chunks = new Chunk[0];
+  private final AtomicLong lastId = new AtomicLong();
+  private final LongAdder count = new LongAdder();
 
   /** Numbers a new object and stores the one {@code make} builds with that number. */
   <S> Core<S> add(java.util.function.LongFunction<Core<S>> make) {
-    lock.lock();
+    long id = lastId.incrementAndGet();
+    Core<S> core;
     try {
-      long id = ++lastId;
-      Core<S> core = make.apply(id);
-      int c = chunkOf(id);
-      @Nullable Core<?>[][] cs = chunks;
-      if (c >= cs.length) {
-        cs = java.util.Arrays.copyOf(cs, Math.max(c + 1, cs.length * 2));
-        live = java.util.Arrays.copyOf(live, cs.length);
-        chunks = cs;
-      }
-      Core<?>[] chunk = cs[c];
-      if (chunk == null) {
-        chunk = new Core<?>[CHUNK];
-        cs[c] = chunk;
-        chunks = cs; // publish the new chunk
-      }
-      SLOT.setRelease(chunk, slotOf(id), core);
-      live[c]++;
-      count++;
-      return core;
-    } finally {
-      lock.unlock();
+      core = make.apply(id);
+    } catch (RuntimeException | Error e) {
+      gone(id); // the number is used up: its chunk must still be freed one day
+      throw e;
     }
+    SLOT.setRelease(chunkFor(id).slots, slotOf(id), core);
+    count.increment();
+    return core;
   }
 
   /** Removes {@code core} if it is there. */
   void remove(Core<?> core) {
-    lock.lock();
-    try {
-      int c = chunkOf(core.id);
-      @Nullable Core<?>[][] cs = chunks;
-      Core<?>[] chunk = c < cs.length ? cs[c] : null;
-      if (chunk == null || chunk[slotOf(core.id)] != core) {
-        return;
+    Chunk chunk = chunk(chunkOf(core.id));
+    if (chunk == null || !SLOT.compareAndSet(chunk.slots, slotOf(core.id), core, (Core<?>) null)) {
+      return;
+    }
+    count.decrement();
+    gone(core.id);
+  }
+
+  /**
+   * Counts the number {@code id} as gone; its chunk is freed with its last one. Every number of a
+   * chunk is handed out before its last one is gone, since an object is removed only after it was
+   * stored, so no insertion can come after the freeing.
+   */
+  private void gone(long id) {
+    int c = chunkOf(id);
+    Chunk chunk = chunkFor(id);
+    if ((int) GONE.getAndAdd(chunk, 1) + 1 == CHUNK) {
+      lock.lock();
+      try {
+        @Nullable Chunk[] cs = chunks;
+        if (cs[c] == chunk) {
+          cs[c] = null;
+          chunks = cs; // publish
+        }
+      } finally {
+        lock.unlock();
       }
-      SLOT.setRelease(chunk, slotOf(core.id), (Core<?>) null);
-      count--;
-      if (--live[c] == 0 && lastId >= (long) (c + 1) * CHUNK) {
-        cs[c] = null;
-        chunks = cs;
-      }
-    } finally {
-      lock.unlock();
     }
   }
 
@@ -79,27 +99,55 @@ final class ObjectTable {
     if (id < 1) {
       return null;
     }
-    int c = chunkOf(id);
-    @Nullable Core<?>[][] cs = chunks;
-    Core<?>[] chunk = c < cs.length ? cs[c] : null;
-    return chunk == null ? null : (Core<?>) SLOT.getAcquire(chunk, slotOf(id));
+    Chunk chunk = chunk(chunkOf(id));
+    return chunk == null ? null : (Core<?>) SLOT.getAcquire(chunk.slots, slotOf(id));
   }
 
   long size() {
-    return count;
+    return count.sum();
   }
 
   /** Visits the live objects (a weakly consistent view). */
   void forEach(Consumer<Core<?>> action) {
-    for (Core<?>[] chunk : chunks) {
+    for (Chunk chunk : chunks) {
       if (chunk != null) {
         for (int i = 0; i < CHUNK; i++) {
-          Core<?> c = (Core<?>) SLOT.getAcquire(chunk, i);
+          Core<?> c = (Core<?>) SLOT.getAcquire(chunk.slots, i);
           if (c != null) {
             action.accept(c);
           }
         }
       }
+    }
+  }
+
+  private @Nullable Chunk chunk(int c) {
+    @Nullable Chunk[] cs = chunks;
+    return c < cs.length ? cs[c] : null;
+  }
+
+  /** The chunk of {@code id}, made if it is not there yet (it cannot have been freed). */
+  private Chunk chunkFor(long id) {
+    int c = chunkOf(id);
+    Chunk chunk = chunk(c);
+    if (chunk != null) {
+      return chunk;
+    }
+    lock.lock();
+    try {
+      @Nullable Chunk[] cs = chunks;
+      if (c >= cs.length) {
+        cs = java.util.Arrays.copyOf(cs, Math.max(c + 1, cs.length * 2));
+      }
+      chunk = cs[c];
+      if (chunk == null) {
+        chunk = new Chunk();
+        cs[c] = chunk;
+      }
+      chunks = cs; // publish the new chunk (and the grown array)
+      return chunk;
+    } finally {
+      lock.unlock();
     }
   }
 

@@ -30,7 +30,7 @@ final class RunQueue {
   }
 
   /** A queueable node: {@link Core}, or the queue's stub. */
-  abstract static class Node {
+  abstract static class Node extends Link {
     @SuppressWarnings("unused") // accessed through NEXT
     private volatile @Nullable Node runNext;
   }

@@ -180,9 +180,9 @@ final class RuntimeImpl implements ActiveRuntime {
 
   // ---------------------------------------------------------------- counters
 
-  void countProcessed(int n) {
+  void countProcessed(Carrier carrier, int n) {
     if (n > 0) {
-      dispatcher.countProcessed(n);
+      dispatcher.countProcessed(carrier, n);
     }
   }
 

@@ -288,10 +288,10 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
                 + "; reactive objects use the SynchronousFuture that call() gives them");
       }
       me.returnTaken();
-      me.waitingFor = this;
+      me.waitingFor(this);
       List<Address> cycle = findCycle(me);
       if (cycle != null) {
-        me.waitingFor = null;
+        me.waitingFor(null);
         throw new WaitCycleException(cycle);
       }
     }
@@ -329,7 +329,7 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
       w.thread = null;
       Dispatcher.afterBlock();
       if (me != null) {
-        me.waitingFor = null;
+        me.waitingFor(null);
       }
     }
   }
@@ -376,7 +376,7 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
       if (c == me) {
         return path;
       }
-      ValueFuture<?> next = c.waitingFor;
+      ValueFuture<?> next = c.waitingFor();
       if (next == null || next.result != null) {
         return null;
       }

@@ -43,6 +43,7 @@ final class Plan implements Inputs, Outputs {
   private final long[] stamps;
 
   private Step current;
+
   private long cycle;
   private long now;
 
@@ -86,6 +87,8 @@ final class Plan implements Inputs, Outputs {
         case Inhibitor inhibitor -> {
           ConnectorState state = states.of(inhibitor);
           source.watches = append(source.watches, new Watch(sourceSlot, state));
+          source.connected = true;
+          target.gated = true;
           int input = target.input(inhibitor.target().port());
           Gate[] gates = target.inGates[input];
           Gate gate = new Gate(state, inhibitor.hold().toNanos());
@@ -94,6 +97,8 @@ final class Plan implements Inputs, Outputs {
         case Suppressor suppressor -> {
           ConnectorState state = states.of(suppressor);
           source.watches = append(source.watches, new Watch(sourceSlot, state));
+          source.connected = true;
+          target.connected = true;
           target.replaces =
               append(
                   target.replaces,
@@ -124,20 +129,27 @@ final class Plan implements Inputs, Outputs {
         }
         failures.failed(module, e);
       }
-      for (Watch watch : step.watches) {
-        if (stamps[watch.slot] == cycle) {
-          watch.state.lastActive = now;
-          watch.state.latched = values[watch.slot];
-        }
-      }
-      for (Replace replace : step.replaces) {
-        if (replace.state.holds(now, replace.holdNanos)) {
-          values[replace.slot] = replace.state.latched;
-          stamps[replace.slot] = cycle;
-        }
+      if (step.connected) {
+        connectors(step, cycle, now);
       }
     }
     current = NONE;
+  }
+
+  /** After {@code step}'s module ran: the connectors it is the source or the target of. */
+  private void connectors(Step step, long cycle, long now) {
+    for (Watch watch : step.watches) {
+      if (stamps[watch.slot] == cycle) {
+        watch.state.lastActive = now;
+        watch.state.latched = values[watch.slot];
+      }
+    }
+    for (Replace replace : step.replaces) {
+      if (replace.state.holds(now, replace.holdNanos)) {
+        values[replace.slot] = replace.state.latched;
+        stamps[replace.slot] = cycle;
+      }
+    }
   }
 
   /** What was emitted in the last cycle run, after suppression. */
@@ -165,23 +177,35 @@ final class Plan implements Inputs, Outputs {
   @SuppressWarnings("unchecked") // the wiring was type-checked against the ports' types
   public <S extends Signal> @Nullable S get(Port<S> port) {
     Step step = current;
-    int j = step.input(port);
-    Gate[] gates = step.inGates[j];
-    if (gates != null) {
-      for (Gate gate : gates) {
-        if (gate.state.holds(now, gate.holdNanos)) {
-          return null;
+    int slot;
+    int j;
+    if (port == step.in0) {
+      j = 0; // the first input, as most modules have one: no search
+      slot = step.slot0;
+    } else {
+      j = step.input(port);
+      slot = step.inSlots[j];
+    }
+    if (slot == UNFED) {
+      return null; // nothing feeds it: nothing to read, whatever gates it
+    }
+    if (step.gated) {
+      Gate[] gates = step.inGates[j];
+      if (gates != null) {
+        for (Gate gate : gates) {
+          if (gate.state.holds(now, gate.holdNanos)) {
+            return null;
+          }
         }
       }
     }
-    int slot = step.inSlots[j];
-    return slot == UNFED || stamps[slot] != cycle ? null : (S) values[slot];
+    return stamps[slot] != cycle ? null : (S) values[slot];
   }
 
   @Override
   public <S extends Signal> void emit(Port<S> port, S signal) {
     Step step = current;
-    int j = step.output(port);
+    int j = port == step.out0 ? 0 : step.output(port);
     if (!port.type().isInstance(signal)) {
       throw new IllegalArgumentException(
           "output "
@@ -216,6 +240,18 @@ final class Plan implements Inputs, Outputs {
     Watch[] watches = new Watch[0];
     Replace[] replaces = new Replace[0];
 
+    /** Whether a connector watches this module's outputs or replaces one: run after it. */
+    boolean connected;
+
+    /** Whether an inhibitor gates one of this module's inputs. */
+    boolean gated;
+
+    /** The first input port and its slot, the first output port (null if none). */
+    final @Nullable Port<?> in0;
+
+    int slot0 = UNFED;
+    final @Nullable Port<?> out0;
+
     Step(@Nullable BehaviorModule module, Port<?>[] inPorts, Port<?>[] outPorts) {
       this.module = module;
       this.kind =
@@ -231,6 +267,8 @@ final class Plan implements Inputs, Outputs {
       this.inGates = new Gate[inPorts.length][];
       this.outPorts = outPorts;
       this.outSlots = new int[outPorts.length];
+      this.in0 = inPorts.length > 0 ? inPorts[0] : null;
+      this.out0 = outPorts.length > 0 ? outPorts[0] : null;
     }
 
     String name() {
@@ -238,7 +276,11 @@ final class Plan implements Inputs, Outputs {
     }
 
     void feed(Port<?> port, int slot) {
-      inSlots[input(port)] = slot;
+      int j = input(port);
+      inSlots[j] = slot;
+      if (j == 0) {
+        slot0 = slot;
+      }
     }
 
     /** The index of input {@code port}: by identity first, as modules pass their constants. */
