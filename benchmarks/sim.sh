@@ -12,8 +12,10 @@
 # Builds benchmarks/target/benchmarks.jar with the Maven wrapper, then runs each size in a JVM of
 # its own on a JDK >= 21 (scripts/java.sh) with
 # SIM_JAVA_OPTS (default "-Xms1g -Xmx1g"). Prints one line per size:
-#   sim name=rtf atoms=<n> step_ms=<s> rtf=<x> legs=<l>
-# rtf is virtual seconds simulated per real second (see docs/simulator.md, "Speed").
+#   sim name=rtf atoms=<n> step_ms=<s> rtf=<x> legs=<l> cpu_rtf=<y> us_per_atom_step=<z> load=<a>
+# rtf is virtual seconds simulated per real second, cpu_rtf per second of the simulating thread's
+# CPU time, us_per_atom_step that CPU time per atom and physics step, and load the machine's
+# one-minute load average when the size finished (see docs/simulator.md, "Speed").
 set -euo pipefail
 
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -30,7 +32,7 @@ while (($#)); do
     --legs) args+=(--legs "${2:?--legs needs kinematic or jointed}"); shift 2 ;;
     --seconds) args+=(--seconds "${2:?--seconds needs a number}"); shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "sim.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) sizes+=("$1"); shift ;;
   esac
@@ -50,5 +52,6 @@ fi
 read -r -a opts <<<"${SIM_JAVA_OPTS:--Xms1g -Xmx1g}"
 echo "# $("$java" -version 2>&1 | head -1); options: ${opts[*]}; $(nproc) cores" >&2
 for n in "${sizes[@]}"; do
-  "$java" "${opts[@]}" -cp "$jar" org.armgals.bench.sim.SimRtf "${args[@]}" "$n"
+  line="$("$java" "${opts[@]}" -cp "$jar" org.armgals.bench.sim.SimRtf "${args[@]}" "$n")"
+  echo "$line load=$(cut -d' ' -f1 /proc/loadavg 2>/dev/null || echo unknown)"
 done

@@ -1,6 +1,8 @@
 package org.armgals.bench.sim;
 
 import java.io.PrintStream;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.time.Duration;
 import org.armgals.active.TimeSource;
 import org.armgals.maam.sim.AtomBody;
@@ -14,7 +16,10 @@ import org.armgals.maam.spi.Leg;
  * Measures the real-time factor of maam-sim: {@code n} atoms in tripod pose on a grid, each run by
  * a simple controller that reads its sensors and swings its three upper legs, at a fixed physics
  * step and a 10 ms control period, with kinematic (default) or jointed legs. Prints {@code sim
- * name=rtf atoms=<n> step_ms=<s> rtf=<x> legs=<kinematic|jointed>}.
+ * name=rtf atoms=<n> step_ms=<s> rtf=<x> legs=<kinematic|jointed> cpu_rtf=<y>
+ * us_per_atom_step=<z>}: {@code rtf} is virtual seconds per second of the wall clock, {@code
+ * cpu_rtf} per second of the simulating thread's CPU time (what the figure would be on a machine of
+ * its own), and {@code us_per_atom_step} that CPU time per atom and physics step, in microseconds.
  *
  * <p>Usage: {@code SimRtf [--step-ms s] [--warmup-seconds w] [--seconds m] [--legs l] n...}
  */
@@ -22,6 +27,7 @@ public final class SimRtf {
 
   private final TimeSource time;
   private final PrintStream out;
+  private final ThreadMXBean threads = ManagementFactory.getThreadMXBean();
 
   SimRtf(TimeSource time, PrintStream out) {
     this.time = time;
@@ -75,11 +81,21 @@ public final class SimRtf {
       runFor(sim, warmupSeconds);
       long virtualStart = sim.timeNanos();
       long realStart = time.nanoTime();
+      long cpuStart = threads.getCurrentThreadCpuTime();
       runFor(sim, seconds);
-      double rtf = (sim.timeNanos() - virtualStart) / (double) (time.nanoTime() - realStart);
+      long cpu = threads.getCurrentThreadCpuTime() - cpuStart;
+      long virtual = sim.timeNanos() - virtualStart;
+      double rtf = virtual / (double) (time.nanoTime() - realStart);
+      double atomSteps = (double) atoms * virtual / step.toNanos();
       out.printf(
-          "sim name=rtf atoms=%d step_ms=%s rtf=%.3f legs=%s%n",
-          atoms, stepMs, rtf, legs.name().toLowerCase(java.util.Locale.ROOT));
+          java.util.Locale.ROOT,
+          "sim name=rtf atoms=%d step_ms=%s rtf=%.3f legs=%s cpu_rtf=%.3f us_per_atom_step=%.3f%n",
+          atoms,
+          stepMs,
+          rtf,
+          legs.name().toLowerCase(java.util.Locale.ROOT),
+          virtual / (double) cpu,
+          cpu / 1e3 / atomSteps);
     }
   }
 

@@ -34,6 +34,9 @@ final class AtomModel {
   final DBody kernel;
   final Map<Leg, LegModel> legs = new EnumMap<>(Leg.class);
 
+  /** The space of the atom's proximity rays: enabled only while the sensors are read. */
+  final DSpace rays;
+
   /** The kernel's up axis at the start, in the kernel's frame: what tilt is measured from. */
   private final DVector3 upLocal;
 
@@ -80,8 +83,12 @@ final class AtomModel {
     DMass mass = OdeHelper.createMass();
     mass.setSphereTotal(params.kernelMass(), params.kernelRadius());
     double cylinder = params.legLength() - 2 * params.legRadius();
+    // The proximity rays in a space of their own too, enabled only while the sensors are read.
+    rays = OdeHelper.createSimpleSpace(physics.space);
+    rays.setData(new GeomTag(GeomTag.Kind.RAYS, this, null));
+    rays.disable();
     for (Leg leg : Leg.values()) {
-      DRay ray = OdeHelper.createRay(physics.space, params.proximityRange());
+      DRay ray = OdeHelper.createRay(rays, params.proximityRange());
       ray.disable();
       DCapsule capsule = OdeHelper.createCapsule(parts, params.legRadius(), cylinder);
       LegModel model =

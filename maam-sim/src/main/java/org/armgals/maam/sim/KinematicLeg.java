@@ -148,9 +148,28 @@ final class KinematicLeg extends LegModel {
     AtomParams p = atom.params;
     double excess = Math.abs(load) - (on ? torqueLimit : 0);
     if (excess > 0) {
-      return Math.signum(load) * Math.min(p.maxSpeed(), p.servoGain() * excess / p.maxTorque());
+      double speed = Math.min(p.maxSpeed(), p.servoGain() * excess / p.maxTorque());
+      return Math.signum(load) * speed * yieldShare();
     }
     return on ? clamp(p.servoGain() * error, p.maxSpeed()) : 0;
+  }
+
+  /**
+   * The share of its free speed at which an overloaded axis gives way: 1 for a free leg; for a
+   * bound leg, its own inertia about the pivot over that of the leg and the bound atom it turns
+   * with it (the atom's mass at the distance of its kernel from the pivot), so that a binding's
+   * bodies are not thrown about by a reaction that comes a step late.
+   */
+  private double yieldShare() {
+    Binding b = binding;
+    if (b == null) {
+      return 1;
+    }
+    AtomModel other = b.other(this).atom;
+    AtomParams q = other.params;
+    double mass = q.kernelMass() + Leg.values().length * q.legMass();
+    double d = pivot().distance(other.kernel.getPosition());
+    return inertia / (inertia + mass * d * d);
   }
 
   private static double clamp(double x, double limit) {

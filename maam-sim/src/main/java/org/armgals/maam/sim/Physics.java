@@ -180,10 +180,12 @@ final class Physics {
   private void near(Object data, DGeom o1, DGeom o2) {
     GeomTag t1 = (GeomTag) o1.getData();
     GeomTag t2 = (GeomTag) o2.getData();
-    if (t1.kind() == GeomTag.Kind.ATOM || t2.kind() == GeomTag.Kind.ATOM) {
-      // An atom's space near something else: look inside, unless only rays are cast and neither is
-      // a ray.
-      if (raysOnly && t1.kind() != GeomTag.Kind.RAY && t2.kind() != GeomTag.Kind.RAY) {
+    boolean rays1 = t1.kind() == GeomTag.Kind.RAYS || t1.kind() == GeomTag.Kind.RAY;
+    boolean rays2 = t2.kind() == GeomTag.Kind.RAYS || t2.kind() == GeomTag.Kind.RAY;
+    if (space(t1) || space(t2)) {
+      // An atom's space (of parts or of rays) near something else: look inside, unless rays would
+      // meet rays, or only rays are cast and neither is one.
+      if (rays1 && rays2 || raysOnly && !rays1 && !rays2) {
         return;
       }
       if (!raysOnly && still(t1) && still(t2)) {
@@ -352,6 +354,10 @@ final class Physics {
         sign * (ry * f.get2() - rz * f.get1()),
         sign * (rz * f.get0() - rx * f.get2()),
         sign * (rx * f.get1() - ry * f.get0()));
+  }
+
+  private static boolean space(GeomTag tag) {
+    return tag.kind() == GeomTag.Kind.ATOM || tag.kind() == GeomTag.Kind.RAYS;
   }
 
   /** A resting atom or the world, for collisions. */

@@ -218,6 +218,9 @@ final class SimulationImpl implements Simulation {
 
   private void senseAll() {
     for (AtomModel atom : atoms) {
+      if (!atom.failed) {
+        atom.rays.enable();
+      }
       for (LegModel leg : atom.legs.values()) {
         if (atom.failed || leg.failed) {
           continue;
@@ -232,6 +235,7 @@ final class SimulationImpl implements Simulation {
     }
     physics.castRays();
     for (AtomModel atom : atoms) {
+      atom.rays.disable();
       for (LegModel leg : atom.legs.values()) {
         leg.ray.disable();
       }
