@@ -6,6 +6,8 @@
 #  - for each library module: the jar, its -sources and -javadoc jars and its POM are installed,
 #    the jar's manifest has the module's Automatic-Module-Name, and META-INF holds LICENSE and
 #    NOTICE; armgals-bom and armgals-parent are installed, with url, scm, licenses and developers;
+#  - NOTICE names every third-party artifact a published module brings at run time, with its
+#    version (the first build lists them with dependency:list);
 #  - every file installed under org/armgals (jars and POMs, not Maven's metadata files) has the
 #    same SHA-256 in both builds.
 # It takes two full builds without tests (minutes on two cores). Exit status 0 if all holds.
@@ -36,8 +38,10 @@ build() {
   mkdir -p "$repo"
   echo "check-artifacts: build $name: ./mvnw clean install -DskipTests (local repository $repo)"
   local start=$SECONDS
-  if ! (cd "$root" && ./mvnw -B clean install -DskipTests -Dmaven.repo.local="$repo" \
-    -Dmaven.repo.local.tail="$HOME/.m2/repository") >"$work/$name/build.log" 2>&1; then
+  if ! (cd "$root" && ./mvnw -B clean install dependency:list -DskipTests \
+    -Dmaven.repo.local="$repo" -Dmaven.repo.local.tail="$HOME/.m2/repository" \
+    -DincludeScope=runtime -DexcludeGroupIds=org.armgals -DoutputFile=target/runtime-deps.txt) \
+    >"$work/$name/build.log" 2>&1; then
     tail -40 "$work/$name/build.log" >&2
     echo "check-artifacts: FAILED: build $name failed (log: $work/$name/build.log)" >&2
     exit 1
@@ -74,6 +78,20 @@ contents() {
   echo "check-artifacts: build $1 installed $(find "$repo" -type f \( -name '*.jar' -o -name '*.pom' \) | wc -l) jars and POMs under org/armgals"
 }
 
+# Every runtime dependency of the published modules, artifactId and version, named in NOTICE.
+notice() {
+  local m artifact version listed=0
+  for m in "${library[@]}"; do
+    [[ -f "$root/$m/target/runtime-deps.txt" ]] || { fail "$m: no target/runtime-deps.txt"; continue; }
+    while read -r artifact version; do
+      listed=$((listed + 1))
+      grep -qw -- "$artifact" "$root/NOTICE" || fail "NOTICE does not name $artifact ($m brings it)"
+      grep -qF -- "$version" "$root/NOTICE" || fail "NOTICE does not name $artifact's version $version"
+    done < <(awk -F: '/:jar:/ { print $2, $(NF - 1) }' "$root/$m/target/runtime-deps.txt" | sort -u)
+  done
+  echo "check-artifacts: NOTICE names all $listed runtime dependencies of the published modules (with repeats)"
+}
+
 checksums() {
   (cd "$work/$1/repository/org/armgals" &&
     find . -type f \( -name '*.jar' -o -name '*.pom' \) -print0 | sort -z | xargs -0 sha256sum)
@@ -81,6 +99,7 @@ checksums() {
 
 build first
 contents first
+notice
 if [[ "${1:-}" != "--once" ]]; then
   checksums first >"$work/first.sha256"
   build second
