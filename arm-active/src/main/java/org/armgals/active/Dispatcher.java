@@ -465,7 +465,7 @@ final class Dispatcher {
     }
   }
 
-  // ---------------------------------------------------------------- invoker (STYLE rule 4)
+  // -------------------------------------------------------- invoker (a cycle is a method)
 
   /**
    * One worker step on the calling thread: runs one activation of the next queued object. For a

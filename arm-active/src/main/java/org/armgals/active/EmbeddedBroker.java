@@ -3,10 +3,10 @@ package org.armgals.active;
 import java.util.Optional;
 
 /**
- * An Apache ActiveMQ Artemis broker inside this JVM, the JMS transport's default (DESIGN.md rule
- * 5): persistence off, security off, an in-VM acceptor, and on request a netty acceptor bound to
- * {@code 127.0.0.1} (loopback only, so the absence of credentials reaches no other machine) for
- * runtimes of other JVMs on this host.
+ * An Apache ActiveMQ Artemis broker inside this JVM, the JMS transport's default
+ * (docs/architecture.md, runtime semantics 5): persistence off, security off, an in-VM acceptor,
+ * and on request a netty acceptor bound to {@code 127.0.0.1} (loopback only, so the absence of
+ * credentials reaches no other machine) for runtimes of other JVMs on this host.
  *
  * <p>{@link #close()} stops the broker and leaves none of its non-daemon threads behind.
  * Thread-safe.

@@ -4,7 +4,7 @@ import java.util.Map;
 
 /**
  * A content-based filter over an event's properties, written as a JMS message selector (paper §2.3,
- * §4.1; DESIGN.md rule 6): {@code kind = 'StateEvent' AND energy < 20}.
+ * §4.1; docs/architecture.md, runtime semantics 6): {@code kind = 'StateEvent' AND energy < 20}.
  *
  * <p>A filter means the same thing on both paths: locally, {@link #matches} evaluates the
  * expression with Apache ActiveMQ Artemis's own selector implementation; on a broker, {@link

@@ -12,8 +12,8 @@ import org.jspecify.annotations.Nullable;
 
 /**
  * The {@link Transport} between runtimes over Jakarta Messaging 3.1 and Apache ActiveMQ Artemis
- * (paper §2.3, §4.1; DESIGN.md rules 5-7). Give one to {@link ActiveRuntime.Builder#transport};
- * several runtimes may share one.
+ * (paper §2.3, §4.1; docs/architecture.md, runtime semantics 5-7). Give one to {@link
+ * ActiveRuntime.Builder#transport}; several runtimes may share one.
  *
  * <p>Events to another runtime travel as JMS messages on the paper's topics under a prefix ({@link
  * Topic}), encoded by an explicit codec over the allow-list given to the builder: no Java

@@ -24,12 +24,12 @@ import java.util.Set;
 import org.jspecify.annotations.Nullable;
 
 /**
- * The explicit wire format of events that cross runtimes (DESIGN.md rule 7): no Java serialization.
- * It encodes records and enums of an allow-list, field by field, with values of a closed set of
- * types: null, booleans, numbers, chars, strings, {@link Address}es, byte arrays, lists,
- * string-keyed maps, and further allowed records and enums. A decoder only ever instantiates an
- * allowed type, looked up by its name in the list (never {@code Class.forName}), through its
- * canonical constructor, so the record's own checks run on decoded data too.
+ * The explicit wire format of events that cross runtimes (docs/architecture.md, runtime semantics
+ * 7): no Java serialization. It encodes records and enums of an allow-list, field by field, with
+ * values of a closed set of types: null, booleans, numbers, chars, strings, {@link Address}es, byte
+ * arrays, lists, string-keyed maps, and further allowed records and enums. A decoder only ever
+ * instantiates an allowed type, looked up by its name in the list (never {@code Class.forName}),
+ * through its canonical constructor, so the record's own checks run on decoded data too.
  *
  * <p>A body is a version byte, a count, and that many values. Immutable and thread-safe.
  */

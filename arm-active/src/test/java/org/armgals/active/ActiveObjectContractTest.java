@@ -10,7 +10,10 @@ import org.jspecify.annotations.Nullable;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
-/** The rules every active object keeps, in both modes (DESIGN.md runtime semantics 1, 2, 8). */
+/**
+ * The rules every active object keeps, in both modes (docs/architecture.md, runtime semantics 1, 2,
+ * 8).
+ */
 class ActiveObjectContractTest {
 
   /** Records what it is asked to do, in order. */

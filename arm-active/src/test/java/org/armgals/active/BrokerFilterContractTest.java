@@ -15,7 +15,8 @@ import org.junit.jupiter.params.provider.Arguments;
 /**
  * {@link FilterContractTest}'s table once more, evaluated by the broker: every selector is a
  * subscription of another transport, and the broker must let through exactly what {@link
- * Filter#matches} takes (DESIGN.md rule 6: a filter means the same on both paths).
+ * Filter#matches} takes (docs/architecture.md, runtime semantics 6: a filter means the same on both
+ * paths).
  */
 class BrokerFilterContractTest {
   static final Address BATTERY = new Address("robot", 1);

@@ -16,7 +16,10 @@ import org.armgals.active.JmsFixture.Sink;
 import org.armgals.active.JmsFixture.Sum;
 import org.junit.jupiter.api.Test;
 
-/** Embedded brokers start, serve other JVMs' URLs, stop cleanly and come back (DESIGN rule 5). */
+/**
+ * Embedded brokers start, serve other JVMs' URLs, stop cleanly and come back (docs/architecture.md,
+ * runtime semantics 5).
+ */
 class BrokerLifecycleTest {
 
   private static Set<Thread> nonDaemonThreads() {

@@ -10,7 +10,10 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
-/** What a filter means: JMS message-selector semantics over a map of properties (DESIGN rule 6). */
+/**
+ * What a filter means: JMS message-selector semantics over a map of properties
+ * (docs/architecture.md, runtime semantics 6).
+ */
 class FilterContractTest {
 
   static final Map<String, Object> BATTERY =

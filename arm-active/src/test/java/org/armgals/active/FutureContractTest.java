@@ -9,7 +9,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
-/** Futures in the asynchronous world (DESIGN.md runtime semantics 2). */
+/** Futures in the asynchronous world (docs/architecture.md, runtime semantics 2). */
 class FutureContractTest {
   private final ActiveRuntime runtime = ActiveRuntime.builder().workers(1).jmx(false).build();
 

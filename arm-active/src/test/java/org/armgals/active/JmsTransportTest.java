@@ -29,7 +29,7 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
-/** Two runtimes on one embedded broker (DESIGN.md rules 5 and 7). */
+/** Two runtimes on one embedded broker (docs/architecture.md, runtime semantics 5 and 7). */
 class JmsTransportTest {
   static EmbeddedBroker broker;
 

@@ -15,8 +15,8 @@ import org.junit.jupiter.params.provider.EnumSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * Bounded buffers and their overflow policies (DESIGN.md runtime semantics 4). A buffer is filled
- * deterministically with events whose guard is closed: they stay queued.
+ * Bounded buffers and their overflow policies (docs/architecture.md, runtime semantics 4). A buffer
+ * is filled deterministically with events whose guard is closed: they stay queued.
  */
 class OverflowPolicyTest {
 

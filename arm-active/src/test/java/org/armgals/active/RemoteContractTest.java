@@ -22,7 +22,7 @@ import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * The rules of the active-object contract that concern events from another runtime, for every
- * transport and both modes of the receiver (DESIGN.md rules 1, 2 and 5).
+ * transport and both modes of the receiver (docs/architecture.md, runtime semantics 1, 2 and 5).
  */
 class RemoteContractTest {
   enum Route {

@@ -14,7 +14,10 @@ import javax.management.ObjectName;
 import org.armgals.active.spi.Transport;
 import org.junit.jupiter.api.Test;
 
-/** The runtime facade: lifecycle, figures, JMX, transport (DESIGN.md semantics 1, 5, 8, 9). */
+/**
+ * The runtime facade: lifecycle, figures, JMX, transport (docs/architecture.md, runtime semantics
+ * 1, 5, 8, 9).
+ */
 class RuntimeTest {
 
   static final class Cell {

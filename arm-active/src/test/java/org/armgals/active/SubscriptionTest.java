@@ -16,7 +16,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
-/** Published events, filtered subscriptions and filter swaps (DESIGN.md rule 6). */
+/**
+ * Published events, filtered subscriptions and filter swaps (docs/architecture.md, runtime
+ * semantics 6).
+ */
 class SubscriptionTest {
   static final Address BATTERY = new Address("robot", 1);
   static EmbeddedBroker broker;

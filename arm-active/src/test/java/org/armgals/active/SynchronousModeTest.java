@@ -16,7 +16,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
-/** Reactive objects on clocks (DESIGN.md runtime semantics 3; paper §5.2-5.3). */
+/** Reactive objects on clocks (docs/architecture.md, runtime semantics 3; paper §5.2-5.3). */
 class SynchronousModeTest {
 
   /** A reactive object that logs, per instant, what it received and sends what it is told to. */

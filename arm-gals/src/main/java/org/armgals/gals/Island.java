@@ -19,11 +19,11 @@ import org.armgals.kernel.StructuralMeta;
  * one emits at instant {@code k} is seen from {@code k + 1}. Islands talk to each other
  * asynchronously: an event from another island is taken at the receiver's next release.
  *
- * <p>A cycle is a method (STYLE rule 4): {@link #step()} runs one on the caller's thread, which is
- * how tests and simulations drive an island (virtual time: instant × period; the per-cycle trace
- * then depends only on the inputs, not on the number of workers). {@link #start()} hands the island
- * to a runner on a platform thread of its own that releases it every period of real time and
- * applies the {@link OverrunPolicy}.
+ * <p>A cycle is a method (docs/architecture.md, convention 3): {@link #step()} runs one on the
+ * caller's thread, which is how tests and simulations drive an island (virtual time: instant ×
+ * period; the per-cycle trace then depends only on the inputs, not on the number of workers).
+ * {@link #start()} hands the island to a runner on a platform thread of its own that releases it
+ * every period of real time and applies the {@link OverrunPolicy}.
  *
  * <p>Threading: {@link #step()} is called by one thread at a time and never from inside one of the
  * island's entities, and not at all once the island is started; the other methods may be called

@@ -13,7 +13,7 @@ import org.jspecify.annotations.Nullable;
  *
  * <p>PendingAdaptation: {@link #addReaction}, {@link #removeReaction} and {@link #adapt} are
  * requests. They return at once and are applied by the island between two instants, at its {@link
- * AdaptationPoint}, in the order they were made, never while the entity reacts.
+ * org.armgals.kernel.AdaptationPoint}, in the order they were made, never while the entity reacts.
  *
  * <p>Threading: every method may be called from any thread.
  *

@@ -436,7 +436,10 @@ final class EntityServant<E extends State> implements EventProcessor, ReactiveCy
     }
   }
 
-  /** A failure of this entity's object (DESIGN semantics 8), on the object's thread. */
+  /**
+   * A failure of this entity's object (docs/architecture.md, runtime semantics 8), on the object's
+   * thread.
+   */
   void failed(@Nullable Event event, Throwable error) {
     Address m = metaAddress;
     if (m != null) {

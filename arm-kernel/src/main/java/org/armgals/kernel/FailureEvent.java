@@ -7,8 +7,8 @@ import java.util.Map;
 import org.armgals.active.Address;
 
 /**
- * A failure while the entity processed an event (DESIGN semantics 8): always notified to its
- * behavioral meta, besides the runtime's error handler.
+ * A failure while the entity processed an event (docs/architecture.md, runtime semantics 8): always
+ * notified to its behavioral meta, besides the runtime's error handler.
  *
  * @param entity the entity
  * @param destination its behavioral meta

@@ -12,6 +12,7 @@ public sealed interface PresenceEvent {
 
   /** The runtime beat for the first time, or again after it was lost. */
   record Joined(String runtime) implements PresenceEvent {
+    /** The event; {@code runtime} must not be null. */
     public Joined {
       requireNonNull(runtime, "runtime");
     }
@@ -19,6 +20,7 @@ public sealed interface PresenceEvent {
 
   /** The runtime said it is leaving (its presence was closed). */
   record Left(String runtime) implements PresenceEvent {
+    /** The event; {@code runtime} must not be null. */
     public Left {
       requireNonNull(runtime, "runtime");
     }
@@ -30,6 +32,7 @@ public sealed interface PresenceEvent {
    * get them.
    */
   record Lost(String runtime, Duration silence) implements PresenceEvent {
+    /** The event; neither {@code runtime} nor {@code silence} may be null. */
     public Lost {
       requireNonNull(runtime, "runtime");
       requireNonNull(silence, "silence");

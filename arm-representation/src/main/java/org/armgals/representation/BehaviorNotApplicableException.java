@@ -8,6 +8,8 @@ public final class BehaviorNotApplicableException extends RepresentationExceptio
   private final String behavior;
 
   /**
+   * The exception, its message naming the behavior and the state.
+   *
    * @param behavior the behavior's name
    * @param state the state it was applied in, for the message
    */

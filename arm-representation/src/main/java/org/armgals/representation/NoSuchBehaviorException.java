@@ -8,6 +8,8 @@ public final class NoSuchBehaviorException extends RepresentationException {
   private final String name;
 
   /**
+   * The exception, its message naming the missing behavior and those there are.
+   *
    * @param name the missing behavior's name
    * @param known the names there are, for the message
    */

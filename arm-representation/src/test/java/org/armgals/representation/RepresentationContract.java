@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The contract of State, StateSpace, Behavior, Behaviors and Activation, run against every family
- * by a subclass that supplies a fixture (STYLE rule 10).
+ * by a subclass that supplies a fixture (docs/architecture.md, convention 9).
  *
  * @param <S> the family's state type
  */

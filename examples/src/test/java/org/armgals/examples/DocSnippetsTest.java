@@ -15,9 +15,10 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * STYLE.md rule 12, docs compile: every Java block in README.md and docs/ is preceded by {@code
- * <!-- snippet: path/To/File.java#name -->} and equals, up to whitespace, the region between {@code
- * // tag::name[]} and {@code // end::name[]} in that file (path from the repository root).
+ * Docs compile (docs/architecture.md, convention 10): every Java block in README.md and docs/ is
+ * preceded by {@code <!-- snippet: path/To/File.java#name -->} and equals, up to whitespace, the
+ * region between {@code // tag::name[]} and {@code // end::name[]} in that file (path from the
+ * repository root).
  *
  * <p>To rewrite the blocks from the sources after changing an example: {@code ./mvnw -pl examples
  * -am test -Dtest=DocSnippetsTest -Dsurefire.failIfNoSpecifiedTests=false -Dsnippets.update=true}.

@@ -3,6 +3,8 @@ package org.armgals.examples;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import com.tngtech.archunit.base.DescribedPredicate;
+import com.tngtech.archunit.core.domain.JavaClass;
 import com.tngtech.archunit.core.domain.JavaClasses;
 import com.tngtech.archunit.core.importer.ClassFileImporter;
 import com.tngtech.archunit.core.importer.ImportOption;
@@ -62,18 +64,21 @@ import org.armgals.active.spi.ErrorHandler;
 import org.armgals.active.spi.ObjectListener;
 import org.armgals.active.spi.Transport;
 import org.armgals.examples.archfixture.alpha.Api;
+import org.armgals.examples.archfixture.gamma.Service;
+import org.armgals.examples.archfixture.gamma.spi.Plugin;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * DESIGN.md's module boundaries, over every armgals class on this module's class path (examples
- * depends on all modules): no module reaches another's {@code .internal} package, and arm-active
- * exports exactly its documented API.
+ * The layering rules of docs/architecture.md, over every armgals class on this module's class path
+ * (examples depends on all modules but benchmarks): no module reaches another's {@code .internal}
+ * package, each module exports exactly its listed API, and no module's packages form a cycle.
  */
 class ModuleBoundariesTest {
 
-  /** The root package of each module in DESIGN.md. */
+  /** The root package of each module, as docs/architecture.md's module map lists them. */
   static final List<String> MODULE_ROOTS =
       List.of(
           "org.armgals.active",
@@ -191,6 +196,80 @@ class ModuleBoundariesTest {
         .allSatisfy(name -> assertThat(ARMGALS.contain(name)).as(name).isTrue());
     List<String> nested = MODULE_ROOTS.stream().filter(r -> r.startsWith(root + ".")).toList();
     ModuleRules.onlyTheApiIsPublic(root, api, nested).check(ARMGALS);
+  }
+
+  /**
+   * Every library module's packages are free of cycles. The benchmarks are not on this class path
+   * (no tests run in that module); examples has a test of its own below.
+   */
+  @ParameterizedTest(name = "no package cycle in {0}")
+  @ValueSource(
+      strings = {
+        "org.armgals.active",
+        "org.armgals.representation",
+        "org.armgals.presence",
+        "org.armgals.kernel",
+        "org.armgals.gals",
+        "org.armgals.maam",
+        "org.armgals.maam.sim"
+      })
+  void noModulesPackagesFormACycle(String root) {
+    List<String> nested = MODULE_ROOTS.stream().filter(r -> r.startsWith(root + ".")).toList();
+    ModuleRules.noPackageCycles(root, nested).check(ARMGALS);
+  }
+
+  /**
+   * The command line's run machinery that examples' robots and simulation glue use back: the cycles
+   * cli -> robots -> cli and cli -> sim -> cli, left for the move of that machinery to a package of
+   * its own (issue 18, item 4). Any other cycle in examples fails the test.
+   */
+  static final List<String> CLI_RUN_MACHINERY =
+      List.of(
+          "org.armgals.examples.cli.Example",
+          "org.armgals.examples.cli.RunInterrupted",
+          "org.armgals.examples.cli.RunSettings",
+          "org.armgals.examples.cli.Summary");
+
+  @Test
+  void examplesPackagesFormNoCycleBesideTheRunMachineryKnownToCloseTwo() {
+    DescribedPredicate<JavaClass> runMachinery =
+        DescribedPredicate.describe(
+            "the command line's run machinery " + CLI_RUN_MACHINERY,
+            c ->
+                CLI_RUN_MACHINERY.stream()
+                    .anyMatch(n -> c.getName().equals(n) || c.getName().startsWith(n + "$")));
+    ModuleRules.noPackageCycles("org.armgals.examples", List.of())
+        .ignoreDependency(
+            JavaClass.Predicates.resideInAnyPackage(
+                "org.armgals.examples.robots", "org.armgals.examples.sim"),
+            runMachinery)
+        .check(ARMGALS);
+  }
+
+  @Test
+  void cycleRuleReportsACycleBetweenTwoPackages() {
+    assertThatThrownBy(
+            () ->
+                ModuleRules.noPackageCycles("org.armgals.examples.archfixture.gamma", List.of())
+                    .check(FIXTURES))
+        .isInstanceOf(AssertionError.class)
+        .hasMessageContaining("gamma.left.Left")
+        .hasMessageContaining("gamma.right.Right")
+        .hasMessageNotContaining("Plugin");
+  }
+
+  @Test
+  void cycleRuleLetsAModulesApiAndSpiReferToEachOther() {
+    ModuleRules.noPackageCycles("org.armgals.examples.archfixture.gamma", List.of())
+        .check(new ClassFileImporter().importClasses(Service.class, Plugin.class));
+  }
+
+  @Test
+  void cycleRuleLeavesOutTheModulesNestedInIt() {
+    ModuleRules.noPackageCycles(
+            "org.armgals.examples.archfixture.gamma",
+            List.of("org.armgals.examples.archfixture.gamma.left"))
+        .check(FIXTURES);
   }
 
   private static Set<String> apiList(String module) throws IOException {

@@ -1,6 +1,7 @@
 package org.armgals.examples;
 
 import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.classes;
+import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
 
 import com.tngtech.archunit.base.DescribedPredicate;
 import com.tngtech.archunit.core.domain.Dependency;
@@ -10,13 +11,19 @@ import com.tngtech.archunit.lang.ArchCondition;
 import com.tngtech.archunit.lang.ArchRule;
 import com.tngtech.archunit.lang.ConditionEvents;
 import com.tngtech.archunit.lang.SimpleConditionEvent;
+import com.tngtech.archunit.library.dependencies.SliceAssignment;
+import com.tngtech.archunit.library.dependencies.SliceIdentifier;
+import com.tngtech.archunit.library.dependencies.SliceRule;
 import java.util.Collection;
 import java.util.List;
 import java.util.Set;
 import java.util.stream.Collectors;
 import org.jspecify.annotations.Nullable;
 
-/** The ArchUnit rules behind DESIGN.md's module boundaries, parameterized so they can be tested. */
+/**
+ * The ArchUnit rules behind the layering rules of docs/architecture.md, parameterized so they can
+ * be tested.
+ */
 final class ModuleRules {
   private ModuleRules() {}
 
@@ -28,12 +35,15 @@ final class ModuleRules {
   static ArchRule internalPackagesStayInTheirModule(List<String> moduleRoots) {
     return classes()
         .should(notReachAnotherModulesInternals(moduleRoots))
-        .because("DESIGN.md: .internal holds the rest and is never reached from another module");
+        .because(
+            "docs/architecture.md, layering rule 2: .internal holds the rest and is never reached"
+                + " from another module");
   }
 
   /**
    * In {@code rootPackage} and its subpackages except {@code .internal}, every public class is one
-   * of {@code api}; all others stay package-private (STYLE.md rule 1: export little).
+   * of {@code api}; all others stay package-private (docs/architecture.md, layering rule 3: export
+   * little).
    */
   static ArchRule onlyTheApiIsPublic(String rootPackage, Collection<Class<?>> api) {
     return onlyTheApiIsPublic(
@@ -67,8 +77,45 @@ final class ModuleRules {
         .and(DescribedPredicate.not(nested))
         .should()
         .notHaveModifier(JavaModifier.PUBLIC)
-        .because("STYLE.md rule 1: implementations are package-private; the API list is deliberate")
+        .because(
+            "docs/architecture.md, layering rule 3: implementations are package-private; the API"
+                + " list is deliberate")
         .allowEmptyShould(true);
+  }
+
+  /**
+   * No cycle among the packages of the module rooted at {@code root}, leaving out the packages of
+   * other modules nested in it. The root package and its {@code .spi} count as one: the API takes
+   * the plug-ins (a builder's {@code transport(Transport)}) and the plug-ins take the API's values
+   * (a {@code Transport} sends {@code Event}s to {@code Address}es), by design.
+   */
+  static SliceRule noPackageCycles(String root, List<String> nestedModuleRoots) {
+    SliceAssignment packages =
+        new SliceAssignment() {
+          @Override
+          public SliceIdentifier getIdentifierOf(JavaClass c) {
+            String pkg = c.getPackageName();
+            if (!inPackage(pkg, root)
+                || nestedModuleRoots.stream().anyMatch(r -> inPackage(pkg, r))) {
+              return SliceIdentifier.ignore();
+            }
+            return SliceIdentifier.of(pkg.equals(root + ".spi") ? root : pkg);
+          }
+
+          @Override
+          public String getDescription() {
+            return "the packages of " + root + " (" + root + ".spi counted with " + root + ")";
+          }
+        };
+    return slices()
+        .assignedFrom(packages)
+        .should()
+        .beFreeOfCycles()
+        .because("docs/architecture.md, layering rule 4: the packages of a module form no cycle");
+  }
+
+  private static boolean inPackage(String pkg, String root) {
+    return pkg.equals(root) || pkg.startsWith(root + ".");
   }
 
   private static ArchCondition<JavaClass> notReachAnotherModulesInternals(List<String> roots) {

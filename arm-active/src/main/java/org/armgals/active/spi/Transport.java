@@ -14,7 +14,8 @@ import org.jspecify.annotations.Nullable;
  * event whose destination names another runtime.
  *
  * <p>{@link Transport#inJvm()} links runtimes of one JVM; {@link org.armgals.active.JmsTransport}
- * links runtimes of any JVMs through an Apache ActiveMQ Artemis broker (DESIGN.md rule 5).
+ * links runtimes of any JVMs through an Apache ActiveMQ Artemis broker (docs/architecture.md,
+ * runtime semantics 5).
  *
  * <p>Threading: {@link #send} is called concurrently by any thread; {@link #attach} and {@link
  * #detach} by the runtime when it starts and stops.

@@ -27,6 +27,8 @@ public abstract class BaseActivation<S extends State> implements Activation<S> {
   private Behaviors<S> behaviors;
 
   /**
+   * An activation in {@code initial}, with {@code behaviors}.
+   *
    * @throws IllegalArgumentException if {@code initial} is not in {@code space}, or if {@code
    *     behaviors} holds a behavior the family does not accept
    */

@@ -8,6 +8,8 @@ public final class ScxmlException extends RepresentationException {
   private final int line;
 
   /**
+   * The exception, its message prefixed with the line when it is known.
+   *
    * @param message what is wrong, naming the element
    * @param line the line of the document it is on, or -1 when unknown
    */

@@ -5,11 +5,17 @@ package org.armgals.maam.spi;
  * frame: {@code PX} points along +x, {@code MX} along -x, and so on.
  */
 public enum Leg {
+  /** The leg along +x. */
   PX(1, 0, 0),
+  /** The leg along -x. */
   MX(-1, 0, 0),
+  /** The leg along +y. */
   PY(0, 1, 0),
+  /** The leg along -y. */
   MY(0, -1, 0),
+  /** The leg along +z. */
   PZ(0, 0, 1),
+  /** The leg along -z. */
   MZ(0, 0, -1);
 
   private final int x;
