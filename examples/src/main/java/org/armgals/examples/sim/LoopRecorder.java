@@ -11,6 +11,7 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.LongSupplier;
 import org.armgals.active.Address;
+import org.armgals.active.TimeSource;
 import org.armgals.kernel.AdaptationRequest;
 import org.armgals.kernel.Notification;
 import org.armgals.kernel.ReflectionEvent;
@@ -40,6 +41,9 @@ final class LoopRecorder implements ReflectionListener {
   private final @Nullable LongSupplier simCycle;
   private final AtomicLong order = new AtomicLong();
   private final AtomicLong overruns = new AtomicLong();
+  private final TimeSource wall;
+  private final Map<String, Long> notifiedAt = new java.util.concurrent.ConcurrentHashMap<>();
+  private final Map<String, Long> appliedAt = new java.util.concurrent.ConcurrentHashMap<>();
   private final ConcurrentLinkedQueue<Line> lines = new ConcurrentLinkedQueue<>();
   private final ConcurrentLinkedQueue<ReflectionEvent.Applied> applied =
       new ConcurrentLinkedQueue<>();
@@ -58,13 +62,35 @@ final class LoopRecorder implements ReflectionListener {
    * @param periodNanos the control period: a time of the base level's clock falls in cycle {@code
    *     nanoTime / periodNanos}
    * @param simCycle the simulation's cycle now, for the robots' side; null in a JVM of metas only
+   * @param wall real time, for the latencies from a notification to the request decided on it being
+   *     applied (kept apart from the record: it differs run to run)
    */
-  LoopRecorder(long periodNanos, @Nullable LongSupplier simCycle) {
+  LoopRecorder(long periodNanos, @Nullable LongSupplier simCycle, TimeSource wall) {
     if (periodNanos <= 0) {
       throw new IllegalArgumentException("period must be positive, was " + periodNanos + " ns");
     }
     this.periodNanos = periodNanos;
     this.simCycle = simCycle;
+    this.wall = requireNonNull(wall, "wall");
+  }
+
+  /**
+   * The real time, in nanoseconds, from each notification a request was decided on to the request
+   * being applied, for the requests of {@code loop} (the merged record, with the meta's side) that
+   * were applied here; in the order of the record.
+   */
+  List<Long> latencies(List<Map<String, Object>> loop) {
+    List<Long> latencies = new ArrayList<>();
+    for (Map<String, Object> r : loop) {
+      if ("requested".equals(r.get("event")) && r.get("cause") instanceof String cause) {
+        Long from = notifiedAt.get(cause);
+        Long to = appliedAt.get(r.get("robot") + "#" + r.get("version"));
+        if (from != null && to != null) {
+          latencies.add(to - from);
+        }
+      }
+    }
+    return latencies;
   }
 
   /**
@@ -97,6 +123,7 @@ final class LoopRecorder implements ReflectionListener {
     switch (event) {
       case ReflectionEvent.Notified n -> {
         if (!n.notification().destination().equals(ignored)) {
+          notifiedAt.put(n.entity() + "#" + n.notification().seq(), wall.nanoTime());
           base(n.entity(), "notified", "kind", n.notification().kind(), null, null);
         }
       }
@@ -116,6 +143,9 @@ final class LoopRecorder implements ReflectionListener {
         f.put("version", q.request().version());
         request(f, q.request());
         f.put("held", q.held());
+        if (q.cause() != null) {
+          f.put("cause", q.cause().entity() + "#" + q.cause().seq());
+        }
         meta(q.meta(), cycleOf(q.cause()), f);
       }
       case ReflectionEvent.Suppressed s -> {
@@ -134,6 +164,7 @@ final class LoopRecorder implements ReflectionListener {
           overruns.incrementAndGet(); // real time, not in the record: it would differ run to run
         }
         add(BASE, "", simCycle(), f);
+        appliedAt.put(a.entity() + "#" + a.request().version(), wall.nanoTime());
         applied.add(a);
       }
       case ReflectionEvent.Answered a -> answered.merge(a.entity(), a.instant(), Math::max);

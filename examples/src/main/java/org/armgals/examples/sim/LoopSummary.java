@@ -27,7 +27,8 @@ record LoopSummary(List<Summary.Entry> entries) {
       boolean hasMeta,
       RunSettings settings,
       boolean remote,
-      long overruns) {
+      long overruns,
+      List<Long> latencyNanos) {
     List<Summary.Entry> entries = new ArrayList<>();
     if (!hasMeta) {
       entries.add(new Summary.Entry("meta level", "none"));
@@ -96,14 +97,24 @@ record LoopSummary(List<Summary.Entry> entries) {
                 + " held back by its damping)"));
     if (!latencies.isEmpty()) {
       latencies.sort(null);
+      List<Long> real = new ArrayList<>(latencyNanos);
+      real.sort(null);
       entries.add(
           new Summary.Entry(
-              "decided to applied",
+              "notified to applied",
               String.format(
-                  Locale.ROOT,
-                  "%d cycles (median), %d at most",
-                  latencies.get(latencies.size() / 2),
-                  latencies.get(latencies.size() - 1))));
+                      Locale.ROOT,
+                      "%d cycles (median), %d at most (p99 %d)",
+                      latencies.get(latencies.size() / 2),
+                      latencies.get(latencies.size() - 1),
+                      percentile(latencies, 0.99))
+                  + (real.isEmpty()
+                      ? ""
+                      : String.format(
+                          Locale.ROOT,
+                          "; %.0f µs (median), p99 %.0f µs of real time",
+                          percentile(real, 0.5) / 1e3,
+                          percentile(real, 0.99) / 1e3))));
     }
     if (overruns > 0) {
       entries.add(
@@ -116,5 +127,11 @@ record LoopSummary(List<Summary.Entry> entries) {
               "meta level lost", lost + "; the robots ran on, free, with their last program"));
     }
     return new LoopSummary(entries);
+  }
+
+  /** The {@code q} quantile of sorted {@code values}, nearest rank. */
+  private static long percentile(List<Long> values, double q) {
+    int rank = (int) Math.ceil(q * values.size());
+    return values.get(Math.max(0, Math.min(values.size() - 1, rank - 1)));
   }
 }

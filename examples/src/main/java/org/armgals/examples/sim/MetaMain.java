@@ -82,16 +82,14 @@ public final class MetaMain {
             out,
             RunSettings.MetaPlace.REMOTE);
     SimExample sim =
-        Catalog.standard()
-            .find(example)
-            .filter(SimExample.class::isInstance)
-            .map(SimExample.class::cast)
+        find(example)
             .orElseThrow(() -> new IllegalArgumentException("no example named '" + example + "'"));
     MetaLevel level =
         sim.metaLevel(settings)
             .orElseThrow(() -> new IllegalArgumentException(example + " has no meta level"));
     String name = "meta-" + ProcessHandle.current().pid();
-    LoopRecorder recorder = new LoopRecorder(settings.period().toNanos(), null);
+    LoopRecorder recorder =
+        new LoopRecorder(settings.period().toNanos(), null, org.armgals.active.TimeSource.system());
     try (JmsTransport transport =
         Kernel.allowKernelEvents(JmsTransport.builder().broker(url).prefix(prefix)).build()) {
       ActiveRuntime runtime =
@@ -139,6 +137,25 @@ public final class MetaMain {
         runtime.shutdown(ShutdownMode.CANCEL, Duration.ofSeconds(5));
       }
     }
+  }
+
+  /**
+   * The example named {@code name}: one of the command line's, or one a jar on the class path
+   * provides as a {@link SimExample} service (a benchmark's robot, say).
+   */
+  static Optional<SimExample> find(String name) {
+    Optional<SimExample> standard =
+        Catalog.standard()
+            .find(name)
+            .filter(SimExample.class::isInstance)
+            .map(SimExample.class::cast);
+    if (standard.isPresent()) {
+      return standard;
+    }
+    return java.util.ServiceLoader.load(SimExample.class).stream()
+        .map(java.util.ServiceLoader.Provider::get)
+        .filter(e -> e.name().equals(name))
+        .findFirst();
   }
 
   /** Reads {@code <robot> <instant>} lines until the end of standard input. */

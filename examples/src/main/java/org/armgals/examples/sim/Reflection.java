@@ -20,6 +20,7 @@ import org.armgals.active.ActiveRuntime;
 import org.armgals.active.EmbeddedBroker;
 import org.armgals.active.JmsTransport;
 import org.armgals.active.ShutdownMode;
+import org.armgals.active.TimeSource;
 import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
 import org.armgals.gals.Island;
@@ -104,7 +105,7 @@ public final class Reflection implements AutoCloseable {
     this.example = example;
     this.level = level;
     this.journal = journal;
-    this.recorder = new LoopRecorder(settings.period().toNanos(), sim::cycle);
+    this.recorder = new LoopRecorder(settings.period().toNanos(), sim::cycle, TimeSource.system());
     boolean remote = level != null && settings.meta() == RunSettings.MetaPlace.REMOTE;
     String name = example + "-" + ProcessHandle.current().pid() + "-" + RUNS.incrementAndGet();
     ActiveRuntime.Builder builder =
@@ -402,7 +403,14 @@ public final class Reflection implements AutoCloseable {
     List<Map<String, Object>> loop = LoopRecorder.merge(lines);
     write(dir.resolve(LOOP), loop);
     figures.addAll(
-        LoopSummary.of(loop, level != null, settings, isRemote(), recorder.overruns()).entries());
+        LoopSummary.of(
+                loop,
+                level != null,
+                settings,
+                isRemote(),
+                recorder.overruns(),
+                recorder.latencies(loop))
+            .entries());
     figures.addAll(metaFigures);
     return figures;
   }
