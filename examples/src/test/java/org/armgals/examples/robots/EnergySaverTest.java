@@ -155,4 +155,17 @@ class EnergySaverTest {
         .contains("\"event\":\"filter\"")
         .contains("filter now");
   }
+
+  @Test
+  void aRunWithAMetaLevelLeavesThePictureOfItsLoopAndOneWithoutDoesNot(@TempDir Path out) {
+    Path with = out.resolve("energy");
+    Path without = out.resolve("energy-without-meta");
+    PrintStream quiet = new PrintStream(java.io.OutputStream.nullOutputStream());
+    new EnergySaver(SMALL_BATTERY, true).run(settings(with, OptionalLong.of(50)), quiet);
+    EnergySaver.withoutMetaLevel(SMALL_BATTERY).run(settings(without, OptionalLong.of(50)), quiet);
+
+    assertThat(with.resolve("reflective-loop.png")).isNotEmptyFile();
+    assertThat(without.resolve("trajectory.png")).isNotEmptyFile();
+    assertThat(without.resolve("reflective-loop.png")).doesNotExist();
+  }
 }
