@@ -402,8 +402,10 @@ public final class LoopPicture {
     FontMetrics metrics = g.getFontMetrics();
     double clear = MARK + 2; // from the row's line to the nearest edge of a label
     for (int i = 0; i < rows.size(); i++) {
+      // Not below the last row of a robot: the line between two robots' rows is there.
+      boolean below = i + 1 == rows.size() || rows.get(i + 1).robot().equals(rows.get(i).robot());
       for (RowLabels.Placed p :
-          RowLabels.place(byRow.get(i), frame.left(), frame.right(), metrics)) {
+          RowLabels.place(byRow.get(i), frame.left(), frame.right(), below, metrics)) {
         double baseline =
             p.lane() == 0
                 ? frame.y(i) - clear - metrics.getDescent()

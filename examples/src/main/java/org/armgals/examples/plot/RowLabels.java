@@ -30,8 +30,12 @@ final class RowLabels {
    */
   record Placed(double x, int lane, String text) {}
 
-  /** The labels of {@code marks}, in a row from {@code left} to {@code right} pixels. */
-  static List<Placed> place(List<Mark> marks, double left, double right, FontMetrics metrics) {
+  /**
+   * The labels of {@code marks}, in a row from {@code left} to {@code right} pixels, below the row
+   * too if {@code below}.
+   */
+  static List<Placed> place(
+      List<Mark> marks, double left, double right, boolean below, FontMetrics metrics) {
     List<Mark> sorted = new ArrayList<>(marks);
     sorted.sort(Comparator.comparingDouble(Mark::x));
     double longest = (right - left) / 2;
@@ -39,13 +43,21 @@ final class RowLabels {
     double[] ends = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
     Group[] last = new Group[2];
     for (Mark m : sorted) {
-      int lane = m.x() >= ends[0] ? 0 : m.x() >= ends[1] ? 1 : -1;
+      int latest = last[1] != null && last[0] != null && last[1].x > last[0].x ? 1 : 0;
+      int lane;
+      if (m.x() >= ends[0]) {
+        lane = 0;
+      } else if (last[latest].texts.contains(m.text())) {
+        lane = -1; // the label it falls under says it already: one more
+      } else {
+        lane = below && m.x() >= ends[1] ? 1 : -1;
+      }
       if (lane >= 0) {
         Group g = new Group(m.x(), lane, ends[lane]);
         groups.add(g);
         last[lane] = g;
       } else {
-        lane = last[1] != null && last[1].x > last[0].x ? 1 : 0; // the label it falls under
+        lane = latest;
       }
       Group g = last[lane];
       g.texts.add(m.text());

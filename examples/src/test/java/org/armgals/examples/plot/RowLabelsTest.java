@@ -40,7 +40,8 @@ class RowLabelsTest {
   @Test
   void labelsFarApartAreWrittenBesideTheirMarksAbove() {
     List<Placed> placed =
-        RowLabels.place(List.of(new Mark(100, "first"), new Mark(500, "second")), 0, 1000, METRICS);
+        RowLabels.place(
+            List.of(new Mark(100, "first"), new Mark(500, "second")), 0, 1000, true, METRICS);
 
     assertThat(placed)
         .containsExactly(
@@ -59,6 +60,7 @@ class RowLabelsTest {
                 new Mark(103, "+1 cycle (10 ms)")),
             0,
             1000,
+            true,
             METRICS);
 
     assertThat(placed)
@@ -69,11 +71,31 @@ class RowLabelsTest {
   }
 
   @Test
+  void marksSayingWhatTheirLabelSaysJoinItAndARowWithoutSpaceBelowJoinsTheRest() {
+    List<Mark> marks =
+        List.of(
+            new Mark(100, "+2 cycles (20 ms)"),
+            new Mark(100, "+2 cycles (20 ms)"),
+            new Mark(100, "+1 cycle (10 ms)"));
+
+    assertThat(RowLabels.place(marks, 0, 1000, true, METRICS))
+        .extracting(Placed::lane, Placed::text)
+        .containsExactly(tuple(0, "+2 cycles (20 ms) ×2"), tuple(1, "+1 cycle (10 ms)"));
+    assertThat(RowLabels.place(marks, 0, 1000, false, METRICS))
+        .extracting(Placed::lane, Placed::text)
+        .containsExactly(tuple(0, "+2 cycles (20 ms) ×2; +1 cycle (10 ms)"));
+  }
+
+  @Test
   void aLabelPastTheRightEndEndsThereAndOneTooLongIsCut() {
     String note = "the saving gait draws 0.45 W, 11.52 J left: about 25 s more ".repeat(4);
     List<Placed> placed =
         RowLabels.place(
-            List.of(new Mark(390, "kind = 'threshold'"), new Mark(10, note)), 0, 400, METRICS);
+            List.of(new Mark(390, "kind = 'threshold'"), new Mark(10, note)),
+            0,
+            400,
+            true,
+            METRICS);
 
     assertThat(placed).hasSize(2);
     Placed cut = placed.get(0);
@@ -92,7 +114,7 @@ class RowLabelsTest {
             .mapToObj(i -> new Mark(i * 3.7, "request " + (i % 7)))
             .toList();
 
-    List<Placed> placed = RowLabels.place(marks, 0, 800, METRICS);
+    List<Placed> placed = RowLabels.place(marks, 0, 800, true, METRICS);
 
     assertNoOverlap(placed);
     assertThat(placed)
