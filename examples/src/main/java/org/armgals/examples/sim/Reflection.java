@@ -103,10 +103,11 @@ public final class Reflection implements AutoCloseable {
     this.sim = sim;
     this.settings = settings;
     this.example = example;
-    this.level = level;
+    List<Map<String, Object>> replayed = REPLAYING.get();
+    this.level = level != null && replayed != null ? new ReplayedMetaLevel(level, replayed) : level;
     this.journal = journal;
     this.recorder = new LoopRecorder(settings.period().toNanos(), sim::cycle, TimeSource.system());
-    boolean remote = level != null && settings.meta() == RunSettings.MetaPlace.REMOTE;
+    boolean remote = this.level != null && settings.meta() == RunSettings.MetaPlace.REMOTE;
     String name = example + "-" + ProcessHandle.current().pid() + "-" + RUNS.incrementAndGet();
     ActiveRuntime.Builder builder =
         ActiveRuntime.builder().name(name).workers(WORKERS.get()).jmx(false);
@@ -133,9 +134,10 @@ public final class Reflection implements AutoCloseable {
               .listener(kernel.presenceListener())
               .build();
     }
-    kinds = level == null ? Map.of() : Map.copyOf(level.kinds(kernel));
-    if (level != null) {
-      for (MetaLevel.Watch w : level.watches(this::note)) {
+    MetaLevel meta = this.level;
+    kinds = meta == null ? Map.of() : Map.copyOf(meta.kinds(kernel));
+    if (meta != null) {
+      for (MetaLevel.Watch w : meta.watches(this::note)) {
         watches.add(w);
         for (String robot : w.robots()) {
           metaOf.put(robot, w.meta());
@@ -146,6 +148,31 @@ public final class Reflection implements AutoCloseable {
         }
       }
     }
+  }
+
+  /** The loop's record of a free run being replayed on this thread; null when not replaying. */
+  private static final ThreadLocal<List<Map<String, Object>>> REPLAYING = new ThreadLocal<>();
+
+  /**
+   * Runs {@code run} with every reflective side it opens on this thread replaying {@code loop}, the
+   * record of a free run: its meta level asks for the requests the record says were applied, at the
+   * cycles it says ({@link ReplayedMetaLevel}).
+   */
+  static <T> T replaying(List<Map<String, Object>> loop, java.util.function.Supplier<T> run) {
+    requireNonNull(loop, "loop");
+    REPLAYING.set(List.copyOf(loop));
+    try {
+      return run.get();
+    } finally {
+      REPLAYING.remove();
+    }
+  }
+
+  /**
+   * Whether this thread replays a free run ({@link #replaying(List, java.util.function.Supplier)}).
+   */
+  static boolean replaying() {
+    return REPLAYING.get() != null;
   }
 
   private static final java.util.concurrent.atomic.AtomicInteger RUNS =
