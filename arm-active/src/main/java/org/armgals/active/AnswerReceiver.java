@@ -182,7 +182,7 @@ final class AnswerReceiver implements ValueFuture.Receiver, AutoCloseable {
         boolean failed = false;
         leader = receiving;
         try {
-          if (drain) {
+          if (drain && connected.getAsBoolean()) {
             drain = false;
             failed = !receiveWhatIsThere();
           }
@@ -232,12 +232,13 @@ final class AnswerReceiver implements ValueFuture.Receiver, AutoCloseable {
     }
   }
 
-  /** Receives, without waiting, every message there is; false if a receive failed. */
+  /**
+   * Receives every message the client holds already, waiting a millisecond at most for each (no
+   * round trip to the broker, unlike {@code receiveNoWait}); false if a receive failed.
+   */
   private boolean receiveWhatIsThere() {
     try {
-      for (Message m = consumer.receiveNoWait();
-          m != null && !closed;
-          m = consumer.receiveNoWait()) {
+      for (Message m = consumer.receive(1); m != null && !closed; m = consumer.receive(1)) {
         byOwnThread.increment();
         handler.accept(m);
       }

@@ -8,7 +8,9 @@ package org.armgals.active;
  * once), {@code rejected}, {@code duplicates} or {@code unmatched}; a message that never arrived is
  * counted in {@code lost} by its receiver when the next one of its route does. On each route (the
  * events, requests and answers one transport sends to one runtime on one topic), what the sender
- * counted in {@code sent} is, at its receiver, received, rejected, a duplicate or lost.
+ * counted in {@code sent} is, at its receiver, received, rejected or lost, exactly; a message the
+ * broker delivers again (at least once, after a restart) is counted in {@code duplicates} beyond
+ * that.
  *
  * @param sent events, published events, requests and answers handed to the broker (each event of a
  *     batch counts once)
