@@ -8,7 +8,7 @@
 #               rounds (default 3)
 #   --messages n  events per events run (default 200000); --requests n  round trips per
 #               futurertt run (default 20000)
-#   --guarantee g  amo (at most once), alo (at least once, a tenth of the messages and requests)
+#   --guarantee g  amo (at most once), alo (at least once, a hundredth of the messages and requests)
 #               or both (default)
 #   --no-build  use benchmarks/target/benchmarks.jar as it is
 #

@@ -44,9 +44,11 @@ import org.slf4j.LoggerFactory;
  * kinds share a route when they go to the same runtime on the same topic, and keep its order: a
  * batch holds events of one kind only.
  *
- * <p>The queue is bounded and applies an {@link OverflowPolicy} when full, on the caller's thread,
- * so that no caller waits for the broker beyond the policy's own bound; at-least-once messages are
- * never dropped (a drop policy refuses them with {@link BufferFullException}).
+ * <p>The queue is bounded and applies an {@link OverflowPolicy} when full, on the caller's thread:
+ * a blocking policy waits for room while the connection is up (a broker that is there makes room)
+ * and refuses at once while it is down, so that no caller waits for a broker that is away;
+ * at-least-once messages are never dropped (a drop policy refuses them with {@link
+ * BufferFullException}).
  *
  * <p>An at-most-once request, answer or failure is sent on the caller's own thread when the
  * connection is up, nothing is queued or being sent and the session is free ({@link #submit}): a
@@ -56,6 +58,9 @@ import org.slf4j.LoggerFactory;
  */
 final class JmsSender implements Runnable {
   private static final Logger LOG = LoggerFactory.getLogger(JmsSender.class);
+
+  /** How long a blocked sender waits for room before it looks at the connection again. */
+  private static final long BLOCK_SLICE_NANOS = TimeUnit.MILLISECONDS.toNanos(1);
 
   /** How long the at-least-once sender waits before it sends a refused message again. */
   private static final long RETRY_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
@@ -139,10 +144,23 @@ final class JmsSender implements Runnable {
     OverflowPolicy policy = context.policy();
     switch (policy) {
       case OverflowPolicy.Block b -> {
-        queued.incrementAndGet();
-        if (!queue.offer(o, b.timeout().toNanos(), TimeUnit.NANOSECONDS)) {
+        // Room comes only from a broker that is there: wait for it while connected, in slices
+        // that look at the connection again, and not at all while it is down.
+        long left = b.timeout().toNanos();
+        while (true) {
+          if (!context.connected().getAsBoolean()) {
+            throw full(o, "the broker is unreachable, so no room is coming");
+          }
+          long slice = Math.min(left, BLOCK_SLICE_NANOS);
+          queued.incrementAndGet();
+          if (queue.offer(o, slice, TimeUnit.NANOSECONDS)) {
+            return;
+          }
           queued.decrementAndGet();
-          throw full(o, "no room within " + b.timeout());
+          left -= slice;
+          if (left <= 0) {
+            throw full(o, "no room within " + b.timeout());
+          }
         }
       }
       case OverflowPolicy.Reject r -> throw full(o, "policy reject");

@@ -174,7 +174,7 @@ public interface JmsTransport extends Transport {
     final Map<Topic, Guarantee> topicGuarantees = new LinkedHashMap<>();
     final Map<Class<?>, Guarantee> typeGuarantees = new LinkedHashMap<>();
     int outboundCapacity = 16_384;
-    OverflowPolicy outboundPolicy = OverflowPolicy.dropNewest();
+    OverflowPolicy outboundPolicy = OverflowPolicy.block(ObjectConfig.DEFAULT_BLOCK_TIMEOUT);
 
     Builder() {}
 
@@ -360,10 +360,13 @@ public interface JmsTransport extends Transport {
     /**
      * The bound of the outbound queue, where sends wait for the broker, and what a send finds when
      * it is full: the policies of an object's buffer ({@link OverflowPolicy}), applied on the
-     * caller's thread. A dropped event or answer is counted in {@link TransportStats#unsent()}; a
-     * dropped request fails its future at once; an at-least-once message is never dropped (a drop
-     * policy refuses it with {@link BufferFullException}). Default 16,384 messages, {@link
-     * OverflowPolicy#dropNewest()}: no call waits for the broker.
+     * caller's thread. {@link OverflowPolicy#block} waits for room only while the connection is up
+     * (a sender faster than the broker is paced by it) and refuses at once with {@link
+     * BufferFullException} while it is down: no call waits for a broker that is away. A dropped
+     * event or answer is counted in {@link TransportStats#unsent()}; a dropped request fails its
+     * future at once; an at-least-once message is never dropped (a drop policy refuses it). Default
+     * 16,384 messages and {@code block(}{@link ObjectConfig#DEFAULT_BLOCK_TIMEOUT}{@code )}, as an
+     * asynchronous object's buffer.
      */
     public Builder outboundQueue(int capacity, OverflowPolicy policy) {
       requireNonNull(policy, "policy");

@@ -79,15 +79,16 @@ class TransportOutageTest {
     }
   }
 
-  @Test
-  void aFullOutboundQueueUnderRejectRefusesTheCallerAtOnce() {
+  @org.junit.jupiter.params.ParameterizedTest
+  @org.junit.jupiter.params.provider.ValueSource(strings = {"reject", "block:PT10S"})
+  void aFullOutboundQueueRefusesTheCallerAtOnceWhileTheBrokerIsAway(String policy) {
     int port = JmsFixture.freePort();
     EmbeddedBroker broker = EmbeddedBroker.start(port);
     JmsTransport t =
         JmsFixture.transport("vm://0")
             .broker(broker.nettyUrl().orElseThrow(), broker.user(), broker.password())
             .prefix("reject")
-            .outboundQueue(16, OverflowPolicy.reject())
+            .outboundQueue(16, OverflowPolicy.parse(policy))
             .brokerOption("retryInterval", "100")
             .build();
     try (t) {

@@ -21,8 +21,8 @@ import org.armgals.bench.Args;
  *
  * <p>Usage: {@code BrokerBench [--warmup n] [--runs n] [--messages n] [--requests n] [--guarantee
  * amo|alo|both] [name...]} where a name is {@code events} or {@code futurertt} (default: both).
- * Every round runs each workload with each guarantee (default both; at least once with a tenth of
- * the messages and requests) on each transport with each implementation, one after the other, so
+ * Every round runs each workload with each guarantee (default both; at least once with a hundredth
+ * of the messages and requests) on each transport with each implementation, one after the other, so
  * that all of them see much the same load; {@code --warmup} rounds (default 2) are printed with a
  * {@code warmup} prefix, then {@code --runs} rounds (default 3) are measured. {@code --messages}
  * (default 200000) events per events run, {@code --requests} (default 20000) round trips per
@@ -39,7 +39,7 @@ public final class BrokerBench {
    * At-least-once runs use this share of {@code --messages} and {@code --requests}: every
    * persistent message is synced to disk before the broker confirms it.
    */
-  static final int ALO_SHARE = 10;
+  static final int ALO_SHARE = 100;
 
   private final List<BrokerImpl> impls;
   private final List<Guarantee> guarantees;
