@@ -81,11 +81,14 @@ final class EmbeddedArtemis implements EmbeddedBroker {
       ConfigurationImpl c = new ConfigurationImpl();
       c.setName("armgals-" + id);
       c.setPersistenceEnabled(journal != null);
-      c.setSecurityEnabled(true);
-      // Every connection authenticates anew: an in-VM login must never stand for a network one.
-      c.setAuthenticationCacheSize(0);
-      c.setAuthorizationCacheSize(0);
-      server.setSecurityManager(new BrokerLogin(user, password));
+      // An in-VM-only broker is reachable by this JVM's code alone: security would check nothing.
+      c.setSecurityEnabled(netty != null);
+      if (netty != null) {
+        // Every connection authenticates anew: an in-VM login must never stand for a network one.
+        c.setAuthenticationCacheSize(0);
+        c.setAuthorizationCacheSize(0);
+        server.setSecurityManager(new BrokerLogin(user, password));
+      }
       c.setJMXManagementEnabled(false);
       c.setGracefulShutdownEnabled(false);
       c.setBrokerInstance(dir.toFile());
