@@ -57,7 +57,10 @@ public interface Presence extends AutoCloseable {
 
     Builder() {}
 
-    /** The broker, without credentials (an embedded or loopback-only broker). */
+    /**
+     * The broker, without credentials: an embedded broker's in-VM acceptor (its network acceptor
+     * requires its login, as any broker reached beyond this JVM should).
+     */
     public Builder broker(String url) {
       this.url = requireNonNull(url, "url");
       this.user = null;
