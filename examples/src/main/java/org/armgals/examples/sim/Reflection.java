@@ -91,6 +91,8 @@ public final class Reflection implements AutoCloseable {
   private @Nullable ChildJvm metaJvm;
   private @Nullable String brokerUrl;
   private @Nullable String prefix;
+  private String user = "";
+  private String password = "";
   private List<Summary.Entry> metaFigures = List.of();
   private boolean finished;
 
@@ -127,11 +129,11 @@ public final class Reflection implements AutoCloseable {
     recorder.ignore(kernel.basicBehavioralMeta().address());
     if (remote) {
       presence =
-          Presence.builder()
-              .broker(requireNonNull(brokerUrl, "brokerUrl"))
+          login(Presence.builder(), requireNonNull(brokerUrl, "brokerUrl"))
               .prefix(requireNonNull(prefix, "prefix"))
               .runtime(name)
               .listener(kernel.presenceListener())
+              .failRequestsOf(requireNonNull(transport, "transport"))
               .build();
     }
     MetaLevel meta = this.level;
@@ -203,17 +205,36 @@ public final class Reflection implements AutoCloseable {
     return new Reflection(sim, settings, example, level, journal);
   }
 
+  /**
+   * The transport of the robots' runtime: to {@code --broker} (with the login of {@value
+   * MetaMain#USER} and {@value MetaMain#PASSWORD} in the environment, if any), or to an embedded
+   * broker over netty on a free port of 127.0.0.1, which requires the login it generates for this
+   * run; the meta level's JVM gets the login in its environment.
+   */
   private JmsTransport connect(String name) {
     if (settings.broker().isPresent()) {
       brokerUrl = settings.broker().get().toString();
+      user = java.util.Objects.requireNonNullElse(System.getenv(MetaMain.USER), "");
+      password = java.util.Objects.requireNonNullElse(System.getenv(MetaMain.PASSWORD), "");
     } else {
       EmbeddedBroker b = EmbeddedBroker.start(freePort());
       broker = b;
       brokerUrl = b.nettyUrl().orElseThrow();
+      user = b.user();
+      password = b.password();
     }
     prefix = "armgals-" + name;
-    return Kernel.allowKernelEvents(JmsTransport.builder().broker(brokerUrl).prefix(prefix))
-        .build();
+    JmsTransport.Builder b = JmsTransport.builder().prefix(prefix);
+    if (user.isEmpty()) {
+      b.broker(brokerUrl);
+    } else {
+      b.broker(brokerUrl, user, password);
+    }
+    return Kernel.allowKernelEvents(b).build();
+  }
+
+  private Presence.Builder login(Presence.Builder builder, String url) {
+    return user.isEmpty() ? builder.broker(url) : builder.broker(url, user, password);
   }
 
   /** The kernel the robots are entities of. */
@@ -319,7 +340,7 @@ public final class Reflection implements AutoCloseable {
             "the meta level's JVM",
             MetaMain.class,
             MetaMain.args(example, requireNonNull(brokerUrl), requireNonNull(prefix), settings),
-            Map.of(),
+            user.isEmpty() ? Map.of() : Map.of(MetaMain.USER, user, MetaMain.PASSWORD, password),
             out.resolve(META_LOG));
     metaJvm = child;
     awaitFile(child, out.resolve(META_READY));
