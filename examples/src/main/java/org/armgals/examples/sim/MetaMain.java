@@ -20,7 +20,6 @@ import java.util.OptionalLong;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.JmsTransport;
 import org.armgals.active.ShutdownMode;
-import org.armgals.examples.cli.Catalog;
 import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
 import org.armgals.kernel.Entity;
@@ -162,18 +161,11 @@ public final class MetaMain {
   }
 
   /**
-   * The example named {@code name}: one of the command line's, or one a jar on the class path
-   * provides as a {@link SimExample} service (a benchmark's robot, say).
+   * The example named {@code name}, among the {@link SimExample} services on the class path: the
+   * shipped robots (listed in examples' {@code META-INF/services}) and any a jar adds (a
+   * benchmark's robot, say).
    */
   static Optional<SimExample> find(String name) {
-    Optional<SimExample> standard =
-        Catalog.standard()
-            .find(name)
-            .filter(SimExample.class::isInstance)
-            .map(SimExample.class::cast);
-    if (standard.isPresent()) {
-      return standard;
-    }
     return java.util.ServiceLoader.load(SimExample.class).stream()
         .map(java.util.ServiceLoader.Provider::get)
         .filter(e -> e.name().equals(name))
