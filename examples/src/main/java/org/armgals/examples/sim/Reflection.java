@@ -82,7 +82,7 @@ public final class Reflection implements AutoCloseable {
   private final Map<String, Island> islandOf = new LinkedHashMap<>();
   private final Map<String, BMetaRobot> metaOf = new LinkedHashMap<>();
   private final List<MetaLevel.Watch> watches = new ArrayList<>();
-  private final Map<String, StructuralMeta<PState>> kinds;
+  private Map<String, StructuralMeta<PState>> kinds = Map.of();
   private final ActiveRuntime runtime;
   private final Kernel kernel;
   private @Nullable EmbeddedBroker broker;
@@ -114,9 +114,14 @@ public final class Reflection implements AutoCloseable {
     ActiveRuntime.Builder builder =
         ActiveRuntime.builder().name(name).workers(WORKERS.get()).jmx(false);
     if (remote) {
-      JmsTransport t = connect(name);
-      transport = t;
-      builder.transport(t);
+      try {
+        JmsTransport t = connect(name);
+        transport = t;
+        builder.transport(t);
+      } catch (RuntimeException | Error e) {
+        closeTransport();
+        throw e;
+      }
     }
     runtime = builder.build();
     kernel =
@@ -126,6 +131,16 @@ public final class Reflection implements AutoCloseable {
                 .withTimeSource(sim::timeNanos)
                 .withJmx(true)
                 .withListener(recorder));
+    try {
+      settle(remote, name);
+    } catch (RuntimeException | Error e) {
+      close();
+      throw e;
+    }
+  }
+
+  /** The rest of the opening, once the runtime and the kernel exist: presence, kinds, metas. */
+  private void settle(boolean remote, String name) {
     recorder.ignore(kernel.basicBehavioralMeta().address());
     if (remote) {
       presence =
@@ -502,6 +517,10 @@ public final class Reflection implements AutoCloseable {
     if (presence != null) {
       presence.close();
     }
+    closeTransport();
+  }
+
+  private void closeTransport() {
     if (transport != null) {
       transport.close();
     }
