@@ -56,9 +56,28 @@ public final class Caterpillar implements SimExample {
 
   private static final double SPACING = 0.22;
 
+  private final boolean metaLevel;
+
+  /** The caterpillar with its meta level. */
+  public Caterpillar() {
+    this(true);
+  }
+
+  private Caterpillar(boolean metaLevel) {
+    this.metaLevel = metaLevel;
+  }
+
+  /**
+   * The same robots without a meta level, the head notifying no one: what notifying costs is the
+   * difference (benchmarks/reflect.sh). Named {@code caterpillar-without-meta}; not in the catalog.
+   */
+  public static Caterpillar withoutMetaLevel() {
+    return new Caterpillar(false);
+  }
+
   @Override
   public String name() {
-    return "caterpillar";
+    return metaLevel ? "caterpillar" : "caterpillar-without-meta";
   }
 
   @Override
@@ -105,7 +124,7 @@ public final class Caterpillar implements SimExample {
    */
   @Override
   public Optional<MetaLevel> metaLevel(RunSettings settings) {
-    return Optional.of(new Level(atoms(settings)));
+    return metaLevel ? Optional.of(new Level(atoms(settings))) : Optional.empty();
   }
 
   /** The caterpillar's meta level: the same code in the robots' JVM or another. */
@@ -151,7 +170,7 @@ public final class Caterpillar implements SimExample {
     double cycleSeconds = settings.period().toNanos() / 1e9;
     int head = ids.get(ids.size() - 1);
     Reflection reflection =
-        Reflection.open(sim, settings, name(), metaLevel(settings).orElseThrow(), journal);
+        Reflection.open(sim, settings, name(), metaLevel(settings).orElse(null), journal);
     try {
       List<CaterpillarSegment> segments = new ArrayList<>();
       for (int i = 0; i < ids.size(); i++) {
@@ -168,7 +187,7 @@ public final class Caterpillar implements SimExample {
             segment,
             id,
             island,
-            id == head ? NotificationPolicy.statesOnly() : NotificationPolicy.quiet());
+            id == head && metaLevel ? NotificationPolicy.statesOnly() : NotificationPolicy.quiet());
         sim.setController(id, (atom, cycle) -> reflection.step(island));
         segments.add(segment);
       }

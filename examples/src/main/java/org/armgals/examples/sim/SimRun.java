@@ -41,7 +41,8 @@ import org.armgals.maam.sim.spi.Pacer;
  * <p>The summary: distance covered by the molecule's centre (on the ground plane), its speed in
  * atom diameters per second (an atom's diameter is tip to tip, legs straight), the energy used, the
  * adaptations made and why, and the missed cycles (paced to real time: cycles that ended later than
- * a period after their time; plus those the crew reports).
+ * a period after their time, counted from the start of the first cycle, so that the crew's own
+ * start (a meta level's JVM, say) is none; plus those the crew reports).
  */
 final class SimRun {
   static final String TRACE = "trace.jsonl";
@@ -271,11 +272,12 @@ final class SimRun {
     long period = settings.period().toNanos();
     long missed = 0;
     long i = 0;
+    long first = progress.elapsedNanos(); // the robots' time starts here, not at the crew's start
     while (i < cycles && !interruption.requested()) {
       sim.runCycle();
       i++;
       recording.sample(sim);
-      if (settings.realTime() && progress.elapsedNanos() > sim.timeNanos() + period) {
+      if (settings.realTime() && progress.elapsedNanos() - first > sim.timeNanos() + period) {
         missed++;
       }
       progress.update(i, sim.timeNanos());

@@ -143,6 +143,58 @@ class SimRunTest {
   }
 
   @Test
+  void pacedToRealTimeTheCyclesAreMissedFromTheFirstCycleOnNotFromTheCrewsStart() {
+    AtomicLong now = new AtomicLong();
+    SimExample slowToStart =
+        new SimExample() {
+          @Override
+          public String name() {
+            return example.name();
+          }
+
+          @Override
+          public String summary() {
+            return example.summary();
+          }
+
+          @Override
+          public Scene scene(RunSettings settings) {
+            return example.scene(settings);
+          }
+
+          @Override
+          public Duration defaultDuration() {
+            return example.defaultDuration();
+          }
+
+          @Override
+          public Crew start(Simulation sim, RunSettings settings, Journal journal) {
+            now.addAndGet(Duration.ofSeconds(2).toNanos()); // a meta level's JVM starting, say
+            return example.start(sim, settings, journal);
+          }
+        };
+    RunSettings settings =
+        new RunSettings(
+            OptionalLong.of(5),
+            Optional.empty(),
+            PERIOD,
+            7,
+            Optional.empty(),
+            true,
+            Optional.empty(),
+            dir);
+    ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+    Summary summary;
+    try (PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8)) {
+      summary = SimRun.run(slowToStart, settings, out, false, now::get);
+    }
+
+    // No real time passes on the run's clock once the crew has started: only the crew's own.
+    assertThat(summary.entries())
+        .contains(new Summary.Entry("missed cycles", Long.toString(ScriptedExample.MISSED)));
+  }
+
+  @Test
   void cyclesComeFromTheCyclesTheSecondsOrTheDefaultDurationRoundedUp() {
     assertThat(SimRun.cycles(example, cycles(7))).isEqualTo(7);
     assertThat(
