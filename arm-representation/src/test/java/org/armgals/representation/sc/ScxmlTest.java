@@ -150,15 +150,15 @@ class ScxmlTest {
                     """
                     <scxml xmlns="http://www.w3.org/2005/07/scxml">
                       <state id="A">
-                        <onentry>
-                          <send event="e"><content>hello</content></send>
-                        </onentry>
+                        <invoke type="http://www.w3.org/TR/scxml/">
+                          <content>hello</content>
+                        </invoke>
                       </state>
                     </scxml>
                     """))
-        .hasMessageContaining("element <send> is not supported")
+        .hasMessageContaining("element <invoke> is not supported")
         .hasMessageNotContaining("text")
-        .satisfies(e -> assertThat(((ScxmlException) e).line()).isEqualTo(4));
+        .satisfies(e -> assertThat(((ScxmlException) e).line()).isEqualTo(3));
   }
 
   @Test
