@@ -66,7 +66,8 @@ final class ScxmlReader {
 
     /** Refuses attributes other than {@code keys}. */
     void attributes(String... keys) {
-      Set<String> allowed = Set.of(keys);
+      // A list, so that the message names them in the same order in every run.
+      List<String> allowed = List.of(keys);
       for (String key : attrs.keySet()) {
         if (!allowed.contains(key)) {
           throw new ScxmlException(
