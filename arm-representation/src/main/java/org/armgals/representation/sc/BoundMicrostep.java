@@ -52,7 +52,7 @@ final class BoundMicrostep implements Behavior<Configuration> {
     for (BoundTransition t : parts) {
       specs.add(t.spec);
     }
-    Semantics.Micro micro = chart.semantics.microstep(specs, state);
+    Semantics.Micro micro = chart.semantics.microstep(specs, state, null, input, input);
     return new Step<>(state, micro.after(), name, micro.actions());
   }
 

@@ -41,7 +41,7 @@ final class BoundTransition implements Behavior<Configuration> {
     if (!isApplicable(state, input)) {
       throw new BehaviorNotApplicableException(spec.id(), state);
     }
-    Semantics.Micro micro = chart.semantics.microstep(List.of(spec), state);
+    Semantics.Micro micro = chart.semantics.microstep(List.of(spec), state, null, input, input);
     return new Step<>(state, micro.after(), spec.id(), micro.actions());
   }
 

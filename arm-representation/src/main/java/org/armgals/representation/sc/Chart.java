@@ -25,6 +25,7 @@ final class Chart {
     final List<ScAction> onEntry;
     final List<ScAction> onExit;
     final List<ScAction> defaultActions;
+    final @Nullable ScData doneData;
     final List<Node> children = new ArrayList<>();
     final List<Node> initial = new ArrayList<>();
     final List<Node> historyDefault = new ArrayList<>();
@@ -41,6 +42,7 @@ final class Chart {
       this.onEntry = source.onEntry();
       this.onExit = source.onExit();
       this.defaultActions = source.defaultActions();
+      this.doneData = source.doneData();
     }
 
     boolean isHistory() {

@@ -6,6 +6,10 @@ import java.math.BigDecimal;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import java.util.function.Predicate;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.jspecify.annotations.Nullable;
 
 /**
@@ -39,9 +43,12 @@ final class Condition {
 
   private record Compare(String op, Expr left, Expr right) implements Expr {}
 
-  /** What a condition is evaluated against. */
+  /**
+   * What a condition is evaluated against: which states are active (for {@code In}), and the event
+   * being processed.
+   */
   record Context(
-      Configuration configuration, @Nullable String eventName, @Nullable Object eventData) {}
+      Predicate<String> active, @Nullable String eventName, @Nullable Object eventData) {}
 
   private final String text;
   private final Expr expr;
@@ -64,7 +71,12 @@ final class Condition {
     Expr e = p.or();
     p.skipSpace();
     if (p.pos < text.length()) {
-      throw p.error("'" + text.substring(p.pos) + "' after a complete condition");
+      String rest = text.substring(p.pos);
+      Matcher op = ECMASCRIPT_OPERATOR.matcher(rest);
+      throw p.error(
+          op.lookingAt()
+              ? "ECMAScript's operator '" + op.group().strip() + "' (in '" + rest + "')"
+              : "'" + rest + "' after a complete condition");
     }
     return new Condition(text, e, p.states);
   }
@@ -79,6 +91,35 @@ final class Condition {
    */
   boolean holds(Context context) {
     return truthy(value(expr, context));
+  }
+
+  /**
+   * The value of the expression in {@code context}: a string, a number, a boolean, null, {@link
+   * #UNDEFINED}, or what the event's data holds.
+   */
+  @Nullable Object value(Context context) {
+    return value(expr, context);
+  }
+
+  /**
+   * {@code v} as ECMAScript's ToString writes a primitive value ({@code 'a'} is {@code a}, {@code
+   * 2.50} is {@code 2.5}, {@code null} and {@code undefined} are their names); null for anything
+   * else (a map, a list, another object).
+   */
+  static @Nullable String text(@Nullable Object v) {
+    return switch (v) {
+      case null -> "null";
+      case Undefined u -> "undefined";
+      case String s -> s;
+      case Boolean b -> b.toString();
+      case Double d when d.isNaN() || d.isInfinite() -> d > 0 ? "Infinity" : d.toString();
+      case Float f when f.isNaN() || f.isInfinite() -> text(f.doubleValue());
+      case Number n -> {
+        BigDecimal b = new BigDecimal(n.toString()).stripTrailingZeros();
+        yield b.signum() == 0 ? "0" : b.toPlainString();
+      }
+      default -> null;
+    };
   }
 
   @Override
@@ -96,14 +137,15 @@ final class Condition {
     }
   }
 
-  private static final Object UNDEFINED = Undefined.UNDEFINED;
+  /** ECMAScript's {@code undefined}, as a value of an expression or in an event's data. */
+  static final Object UNDEFINED = Undefined.UNDEFINED;
 
   private static @Nullable Object value(Expr e, Context c) {
     return switch (e) {
       case Literal l -> l.value();
       case EventName n -> c.eventName() == null ? UNDEFINED : c.eventName();
       case EventData d -> field(c.eventData(), d.path());
-      case In in -> c.configuration().isActive(in.state());
+      case In in -> c.active().test(in.state());
       case Not n -> !truthy(value(n.operand(), c));
       // ECMAScript's && and || answer one of their operands.
       case And a -> {
@@ -250,6 +292,59 @@ final class Condition {
     return Double.compare(x, y) == 0 || x == y ? 0 : Double.compare(x, y);
   }
 
+  /** ECMAScript operators the language does not have, as they may follow a complete operand. */
+  private static final Pattern ECMASCRIPT_OPERATOR =
+      Pattern.compile("(\\+\\+|--|\\+|-|\\*|/|%|\\?|\\[|=(?!=)|\\bin\\b|\\binstanceof\\b)\\s*");
+
+  /** ECMAScript's keywords that may begin an expression or a statement. */
+  private static final Set<String> ECMASCRIPT_KEYWORDS =
+      Set.of(
+          "typeof",
+          "void",
+          "delete",
+          "new",
+          "this",
+          "function",
+          "return",
+          "var",
+          "let",
+          "const",
+          "in",
+          "instanceof",
+          "if",
+          "for",
+          "while");
+
+  /** The system variables of the recommendation's data models (section 5.10). */
+  private static final Set<String> SYSTEM_VARIABLES =
+      Set.of("_sessionid", "_name", "_ioprocessors");
+
+  /**
+   * What {@code word}, an operand the language does not have, is: the message names it as what it
+   * needs (ECMAScript, or a data model).
+   */
+  private static String describe(String word) {
+    String head = word.contains(".") ? word.substring(0, word.indexOf('.')) : word;
+    if (ECMASCRIPT_KEYWORDS.contains(word)) {
+      return "ECMAScript's '" + word + "'";
+    }
+    if (word.equals("_event")) {
+      return "'_event' (the data model's event variable; the language has its fields name and"
+          + " data)";
+    }
+    if (head.equals("_event")) {
+      return "'" + word + "' (a field of the data model's _event other than name and data)";
+    }
+    if (SYSTEM_VARIABLES.contains(head)) {
+      return "'" + word + "' (a system variable of the data model)";
+    }
+    if (!word.isEmpty()
+        && (Character.isLetter(word.charAt(0)) || word.charAt(0) == '_' || word.charAt(0) == '$')) {
+      return "'" + word + "' (a variable of a data model)";
+    }
+    return "'" + word + "'";
+  }
+
   /** A recursive-descent parser of the language. */
   private static final class Parser {
     private static final List<String> OPS = List.of("===", "!==", "==", "!=", "<=", ">=", "<", ">");
@@ -360,7 +455,14 @@ final class Condition {
             }
             yield new EventData(path);
           }
-          throw error(word.isEmpty() ? "'" + text.substring(pos) + "'" : "'" + word + "'");
+          if (word.isEmpty()) {
+            Matcher op = ECMASCRIPT_OPERATOR.matcher(text).region(pos, text.length());
+            throw error(
+                op.lookingAt()
+                    ? "ECMAScript's operator '" + op.group().strip() + "'"
+                    : "'" + text.substring(pos) + "'");
+          }
+          throw error(describe(word));
         }
       };
     }

@@ -15,10 +15,12 @@ import org.armgals.representation.internal.BaseActivation;
 import org.jspecify.annotations.Nullable;
 
 /**
- * A statechart run. A dispatch is one macrostep of the W3C algorithm: the trigger's microstep, then
- * eventless transitions and the events raised on the internal queue until nothing is left. Each
- * microstep is one step, named by the ids of its transitions separated by spaces (one id when it
- * takes one transition), which {@link #apply} takes again as one microstep.
+ * A statechart run. A dispatch is the W3C algorithm's main event loop from the trigger until the
+ * chart waits for the next external event: the trigger's macrostep (its microstep, then eventless
+ * transitions and the events on the internal queue until nothing is left), then one macrostep for
+ * each event the chart sent itself, in order. Each microstep is one step, named by the ids of its
+ * transitions separated by spaces (one id when it takes one transition), which {@link #apply} takes
+ * again as one microstep.
  */
 final class ScActivation extends BaseActivation<Configuration> {
   /** More microsteps than this in one run-to-completion step is taken for a loop. */
@@ -36,11 +38,12 @@ final class ScActivation extends BaseActivation<Configuration> {
   }
 
   /**
-   * Runs one run-to-completion step on {@code trigger}; nothing (an empty list) when the chart has
-   * finished. All or nothing: if the step loops, the state is unchanged.
+   * Runs the run-to-completion step on {@code trigger}, then those of the events the chart sent
+   * itself; nothing (an empty list) when the chart has finished. All or nothing: if the dispatch
+   * loops, the state is unchanged.
    *
-   * @throws RepresentationException if the step takes more than {@value #MAX_MICROSTEPS} microsteps
-   *     (a loop of eventless transitions or raised events)
+   * @throws RepresentationException if the dispatch takes more than {@value #MAX_MICROSTEPS}
+   *     microsteps (a loop of eventless transitions, raised or sent events)
    */
   @Override
   public List<Step<Configuration>> dispatch(String trigger, @Nullable Object input) {
@@ -49,12 +52,12 @@ final class ScActivation extends BaseActivation<Configuration> {
       return List.of();
     }
     index();
-    Semantics.Run run = chart.semantics.new Run(state(), List.of(), bySource, input);
+    Semantics.Run run = chart.semantics.new Run(state(), List.of(), List.of(), bySource, input);
     // A configuration the chart reached is stable; one forced by reset, or left unstable by a
     // harmonize that added an eventless transition, comes to rest first.
     run.settle();
     run.external(trigger);
-    run.settle();
+    run.complete();
     List<Step<Configuration>> steps = new ArrayList<>();
     for (Semantics.Taken taken : run.taken()) {
       steps.add(

@@ -4,6 +4,7 @@ import static java.util.Objects.requireNonNull;
 
 import java.util.Arrays;
 import java.util.List;
+import org.jspecify.annotations.Nullable;
 
 /**
  * A state of a statechart definition ({@code <state>}, {@code <parallel>}, {@code <final>} or
@@ -29,6 +30,8 @@ import java.util.List;
  *     initial}, that of its {@code <initial>} transition, run after its entry actions when it is
  *     entered by default; for a history with a default, that of its default transition, run after
  *     its parent's entry actions when the default is taken
+ * @param doneData for a final state, the data of the {@code done.state} event entering it raises
+ *     for its parent ({@code <donedata>}); null for none
  */
 public record ScNode(
     String id,
@@ -38,7 +41,8 @@ public record ScNode(
     List<ScAction> onExit,
     List<String> historyDefault,
     List<ScNode> children,
-    List<ScAction> defaultActions) {
+    List<ScAction> defaultActions,
+    @Nullable ScData doneData) {
 
   /** What a node is. */
   public enum Kind {
@@ -64,7 +68,7 @@ public record ScNode(
    *
    * @throws IllegalArgumentException if the id is not a name, or the node has parts its kind does
    *     not allow (children of a final or history, an initial on a non-compound state, actions on a
-   *     history, a history default on a state)
+   *     history, a history default on a state, done data on anything but a final state)
    */
   public ScNode {
     ScNames.requireName(id, "state id");
@@ -93,6 +97,10 @@ public record ScNode(
               + "' has default actions; only a state with an initial or a history with a default"
               + " has them");
     }
+    if (doneData != null && kind != Kind.FINAL) {
+      throw new IllegalArgumentException(
+          kind + " '" + id + "' has done data; only a final state has it");
+    }
     if (!initial.isEmpty()) {
       if (kind != Kind.STATE || children.stream().allMatch(c -> c.kind().isHistory())) {
         throw new IllegalArgumentException(
@@ -101,7 +109,20 @@ public record ScNode(
     }
   }
 
-  /** A node without default actions. */
+  /** A node without done data. */
+  public ScNode(
+      String id,
+      Kind kind,
+      List<String> initial,
+      List<ScAction> onEntry,
+      List<ScAction> onExit,
+      List<String> historyDefault,
+      List<ScNode> children,
+      List<ScAction> defaultActions) {
+    this(id, kind, initial, onEntry, onExit, historyDefault, children, defaultActions, null);
+  }
+
+  /** A node without default actions or done data. */
   public ScNode(
       String id,
       Kind kind,
@@ -110,7 +131,7 @@ public record ScNode(
       List<ScAction> onExit,
       List<String> historyDefault,
       List<ScNode> children) {
-    this(id, kind, initial, onEntry, onExit, historyDefault, children, List.of());
+    this(id, kind, initial, onEntry, onExit, historyDefault, children, List.of(), null);
   }
 
   /** A state: atomic without children, compound with them. */
@@ -155,7 +176,8 @@ public record ScNode(
         onExit,
         historyDefault,
         children,
-        defaultActions);
+        defaultActions,
+        doneData);
   }
 
   /** This node with {@code actions} on entry. */
@@ -168,7 +190,8 @@ public record ScNode(
         onExit,
         historyDefault,
         children,
-        defaultActions);
+        defaultActions,
+        doneData);
   }
 
   /** This node with {@code actions} on exit. */
@@ -181,7 +204,8 @@ public record ScNode(
         Arrays.asList(actions),
         historyDefault,
         children,
-        defaultActions);
+        defaultActions,
+        doneData);
   }
 
   /**
@@ -190,6 +214,31 @@ public record ScNode(
    */
   public ScNode onDefault(ScAction... actions) {
     return new ScNode(
-        id, kind, initial, onEntry, onExit, historyDefault, children, Arrays.asList(actions));
+        id,
+        kind,
+        initial,
+        onEntry,
+        onExit,
+        historyDefault,
+        children,
+        Arrays.asList(actions),
+        doneData);
+  }
+
+  /**
+   * This final state with {@code data} as the data of the {@code done.state} event entering it
+   * raises ({@code <donedata>}).
+   */
+  public ScNode withDoneData(ScData data) {
+    return new ScNode(
+        id,
+        kind,
+        initial,
+        onEntry,
+        onExit,
+        historyDefault,
+        children,
+        defaultActions,
+        requireNonNull(data, "data"));
   }
 }

@@ -27,6 +27,12 @@ public final class Scxml {
   /** The namespace of armgals' additions: {@code action} elements and {@code id} attributes. */
   public static final String ARM_NAMESPACE = "http://armgals.org/scxml";
 
+  /** The {@code target} of a {@code <send>} to the chart's own internal queue. */
+  static final String INTERNAL_TARGET = "#_internal";
+
+  /** The {@code type} of a {@code <send>} by the SCXML event I/O processor, the default. */
+  static final String SCXML_PROCESSOR = "http://www.w3.org/TR/scxml/#SCXMLEventProcessor";
+
   private Scxml() {}
 
   /**

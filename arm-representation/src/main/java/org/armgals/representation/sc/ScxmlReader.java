@@ -1,5 +1,7 @@
 package org.armgals.representation.sc;
 
+import static java.util.Objects.requireNonNull;
+
 import java.io.IOException;
 import java.io.Reader;
 import java.util.ArrayList;
@@ -25,11 +27,18 @@ final class ScxmlReader {
   private ScxmlReader() {}
 
   /**
-   * An element as parsed: namespace, local name, attributes, children, line, and the line of the
-   * first text it holds directly (-1 for none; white space is not text).
+   * An element as parsed: namespace, local name, attributes, children, line, the line of the first
+   * text it holds directly (-1 for none; white space is not text), and that text, white space
+   * included.
    */
   private record El(
-      String ns, String name, Map<String, String> attrs, List<El> children, int line, int[] text) {
+      String ns,
+      String name,
+      Map<String, String> attrs,
+      List<El> children,
+      int line,
+      int[] text,
+      StringBuilder chars) {
     String tag() {
       return ns.equals(Scxml.ARM_NAMESPACE) ? "arm:" + name : name;
     }
@@ -52,7 +61,13 @@ final class ScxmlReader {
         throw new ScxmlException(
             "text in <" + tag() + "> is not supported; expected elements only", text[0]);
       }
-      Set<String> allowed = Set.of(keys);
+      attributes(keys);
+    }
+
+    /** Refuses attributes other than {@code keys}. */
+    void attributes(String... keys) {
+      // A list, so that the message names them in the same order in every run.
+      List<String> allowed = List.of(keys);
       for (String key : attrs.keySet()) {
         if (!allowed.contains(key)) {
           throw new ScxmlException(
@@ -85,7 +100,8 @@ final class ScxmlReader {
         String name = attributes.getLocalName(i);
         attrs.put(ns.equals(Scxml.ARM_NAMESPACE) ? "arm:" + name : name, attributes.getValue(i));
       }
-      El el = new El(uri, local, attrs, new ArrayList<>(), line(), new int[] {-1});
+      El el =
+          new El(uri, local, attrs, new ArrayList<>(), line(), new int[] {-1}, new StringBuilder());
       if (stack.isEmpty()) {
         root = el;
       } else {
@@ -104,11 +120,13 @@ final class ScxmlReader {
       // Text is refused when its element is converted, so that an unsupported element holding
       // text (<data>, <content>, <script>) is refused as such, and text in a supported one is
       // named with its element.
-      if (!stack.isEmpty() && !new String(ch, start, length).isBlank()) {
-        int[] text = stack.get(stack.size() - 1).text();
-        if (text[0] < 0) {
-          text[0] = line();
-        }
+      if (stack.isEmpty()) {
+        return;
+      }
+      El el = stack.get(stack.size() - 1);
+      el.chars().append(ch, start, length);
+      if (el.text()[0] < 0 && !new String(ch, start, length).isBlank()) {
+        el.text()[0] = line();
       }
     }
   }
@@ -198,6 +216,7 @@ final class ScxmlReader {
       List<String> historyDefault = new ArrayList<>();
       List<ScAction> defaultActions = new ArrayList<>();
       List<ScNode> children = new ArrayList<>();
+      ScData[] doneData = {null};
       int transitionCount = 0;
       for (El child : el.children()) {
         String name = scxmlName(child);
@@ -209,6 +228,15 @@ final class ScxmlReader {
           case "state/onexit", "parallel/onexit", "final/onexit" -> {
             child.allow();
             onExit.addAll(content(child));
+          }
+          case "final/donedata" -> {
+            if (doneData[0] != null) {
+              throw new ScxmlException(
+                  "<final id=\"" + id + "\"> has a second <donedata>; expected at most one",
+                  child.line());
+            }
+            child.allow();
+            doneData[0] = data(child);
           }
           case "state/transition", "parallel/transition" ->
               transitions.add(transition(child, id, ++transitionCount));
@@ -252,7 +280,17 @@ final class ScxmlReader {
       List<String> init = initial;
       return guarded(
           el,
-          () -> new ScNode(id, k, init, onEntry, onExit, historyDefault, children, defaultActions));
+          () ->
+              new ScNode(
+                  id,
+                  k,
+                  init,
+                  onEntry,
+                  onExit,
+                  historyDefault,
+                  children,
+                  defaultActions,
+                  doneData[0]));
     }
 
     private static ScNode.Kind historyKind(El el) {
@@ -347,27 +385,257 @@ final class ScxmlReader {
     private static List<ScAction> content(El parent) {
       List<ScAction> actions = new ArrayList<>();
       for (El el : parent.children()) {
-        if (el.ns().equals(Scxml.NAMESPACE) && el.name().equals("raise")) {
-          el.allow("event");
-          String event = el.required("event");
-          actions.add(guarded(el, () -> ScAction.raise(event)));
-        } else if (el.ns().equals(Scxml.NAMESPACE) && el.name().equals("log")) {
-          el.allow("label", "expr");
-          String label = el.attr("label");
-          String expr = el.attr("expr");
-          actions.add(guarded(el, () -> ScAction.log(label, expr == null ? null : expr.strip())));
-        } else if (el.ns().equals(Scxml.ARM_NAMESPACE) && el.name().equals("action")) {
-          el.allow("name");
-          String name = el.required("name");
-          actions.add(guarded(el, () -> ScAction.run(name)));
-        } else {
-          throw unsupported(el, "<raise>, <log> and <arm:action>");
-        }
+        actions.add(action(el));
+      }
+      return actions;
+    }
+
+    /** One element of executable content. */
+    private static ScAction action(El el) {
+      boolean scxml = el.ns().equals(Scxml.NAMESPACE);
+      String name = scxml || el.ns().equals(Scxml.ARM_NAMESPACE) ? el.tag() : "";
+      ScAction action =
+          switch (name) {
+            case "send" -> send(el);
+            case "if" -> conditional(el);
+            case "raise" -> {
+              el.allow("event");
+              String event = el.required("event");
+              yield guarded(el, () -> ScAction.raise(event));
+            }
+            case "log" -> {
+              el.allow("label", "expr");
+              String label = el.attr("label");
+              String expr = el.attr("expr");
+              yield guarded(el, () -> ScAction.log(label, expr == null ? null : expr.strip()));
+            }
+            case "arm:action" -> {
+              el.allow("name");
+              String run = el.required("name");
+              yield guarded(el, () -> ScAction.run(run));
+            }
+            default -> throw unsupported(el, "<raise>, <send>, <if>, <log> and <arm:action>");
+          };
+      if (action instanceof ScAction.Raise
+          || action instanceof ScAction.Log
+          || action instanceof ScAction.Run) {
         if (!el.children().isEmpty()) {
           throw new ScxmlException("<" + el.tag() + "> must be empty", el.line());
         }
       }
-      return actions;
+      return action;
+    }
+
+    /**
+     * {@code <send>} to the chart itself without delay. What the subset leaves out is refused
+     * naming it: a delay, another target, another I/O processor, what needs a data model.
+     */
+    private static ScAction send(El el) {
+      for (String delay : List.of("delay", "delayexpr")) {
+        if (el.attr(delay) != null) {
+          throw new ScxmlException(
+              "<send> with a delay ('"
+                  + delay
+                  + "') is not supported; expected a send without delay to the chart itself",
+              el.line());
+        }
+      }
+      String target = el.attr("target");
+      if (target != null && !target.strip().equals(Scxml.INTERNAL_TARGET)) {
+        throw new ScxmlException(
+            "target '"
+                + target
+                + "' of <send> is not supported: the subset sends to the chart itself only (no"
+                + " target: its external queue; '"
+                + Scxml.INTERNAL_TARGET
+                + "': its internal queue), not to other sessions, #_parent, invoked services or"
+                + " other I/O processors",
+            el.line());
+      }
+      if (el.attr("targetexpr") != null) {
+        throw new ScxmlException(
+            "targetexpr of <send> is not supported: a target computed at run time may name another"
+                + " session; expected no target or '"
+                + Scxml.INTERNAL_TARGET
+                + "'",
+            el.line());
+      }
+      String type = el.attr("type");
+      if (type != null && !type.strip().equals(Scxml.SCXML_PROCESSOR)) {
+        throw new ScxmlException(
+            "type '"
+                + type
+                + "' of <send> is not supported; expected the SCXML event I/O processor ("
+                + Scxml.SCXML_PROCESSOR
+                + ", the default)",
+            el.line());
+      }
+      if (el.attr("typeexpr") != null) {
+        throw new ScxmlException(
+            "typeexpr of <send> is not supported; expected no type or " + Scxml.SCXML_PROCESSOR,
+            el.line());
+      }
+      for (String located : List.of("namelist", "idlocation")) {
+        if (el.attr(located) != null) {
+          throw new ScxmlException(
+              located
+                  + " of <send> names locations of a data model, which the subset does not have",
+              el.line());
+        }
+      }
+      if (el.attr("id") != null) {
+        throw new ScxmlException(
+            "id of <send> is not supported: a send id serves <cancel> of a delayed send and"
+                + " _event.sendid, which the subset does not have",
+            el.line());
+      }
+      el.allow("event", "eventexpr", "target", "type");
+      String event = el.attr("event");
+      String eventExpr = expression(el, "eventexpr");
+      ScData data = data(el);
+      return guarded(
+          el,
+          () ->
+              new ScAction.Send(
+                  event == null ? null : event.strip(), eventExpr, target != null, data));
+    }
+
+    /** The {@code <param>}s or the {@code <content>} of a {@code <send>} or {@code <donedata>}. */
+    private static @Nullable ScData data(El parent) {
+      List<ScData.Param> params = new ArrayList<>();
+      ScData content = null;
+      for (El child : parent.children()) {
+        switch (scxmlName(child)) {
+          case "param" -> params.add(param(child));
+          case "content" -> {
+            if (content != null) {
+              throw new ScxmlException(
+                  "<" + parent.tag() + "> has a second <content>; expected at most one",
+                  child.line());
+            }
+            content = contentData(child);
+          }
+          default -> throw unsupported(child, "<param> or <content>");
+        }
+        if (content != null && !params.isEmpty()) {
+          throw new ScxmlException(
+              "<" + parent.tag() + "> has both <param> and <content>; expected one or the other",
+              child.line());
+        }
+      }
+      return content != null ? content : params.isEmpty() ? null : new ScData.Params(params);
+    }
+
+    private static ScData.Param param(El el) {
+      if (el.attr("location") != null) {
+        throw new ScxmlException(
+            "location of <param> names a location of a data model, which the subset does not"
+                + " have; expected expr",
+            el.line());
+      }
+      el.allow("name", "expr");
+      if (!el.children().isEmpty()) {
+        throw new ScxmlException("<param> must be empty", el.line());
+      }
+      String name = el.required("name");
+      String expr = expression(el, "expr");
+      if (expr == null) {
+        throw new ScxmlException("<param> has no expr; expected one", el.line());
+      }
+      return guarded(el, () -> new ScData.Param(name, expr));
+    }
+
+    private static ScData contentData(El el) {
+      el.attributes("expr");
+      if (!el.children().isEmpty()) {
+        throw new ScxmlException(
+            "XML in <content> is not supported (ECMAScript's data model would make it a DOM);"
+                + " expected text or expr",
+            el.children().get(0).line());
+      }
+      String expr = expression(el, "expr");
+      if (expr == null) {
+        return new ScData.Text(el.chars().toString());
+      }
+      if (el.text()[0] >= 0) {
+        throw new ScxmlException(
+            "<content> has both expr and text; expected one or the other", el.text()[0]);
+      }
+      return new ScData.Expr(expr);
+    }
+
+    /**
+     * {@code <if>}, its {@code <elseif>}s and its {@code <else>}: the content between two of them
+     * is the branch of the first.
+     */
+    private static ScAction conditional(El el) {
+      el.allow("cond");
+      List<ScAction.Branch> branches = new ArrayList<>();
+      String cond = requiredExpression(el, "cond");
+      List<ScAction> actions = new ArrayList<>();
+      List<ScAction> otherwise = null;
+      for (El child : el.children()) {
+        boolean elseif = child.ns().equals(Scxml.NAMESPACE) && child.name().equals("elseif");
+        boolean orElse = child.ns().equals(Scxml.NAMESPACE) && child.name().equals("else");
+        if (!elseif && !orElse) {
+          actions.add(action(child));
+          continue;
+        }
+        if (otherwise != null) {
+          throw new ScxmlException(
+              "<" + child.name() + "> after <else> in <if>; expected <else> last", child.line());
+        }
+        child.allow(elseif ? new String[] {"cond"} : new String[0]);
+        if (!child.children().isEmpty()) {
+          throw new ScxmlException("<" + child.name() + "> must be empty", child.line());
+        }
+        String branchCond = cond;
+        List<ScAction> branchActions = actions;
+        branches.add(guarded(child, () -> new ScAction.Branch(branchCond, branchActions)));
+        actions = new ArrayList<>();
+        if (elseif) {
+          cond = requiredExpression(child, "cond");
+        } else {
+          otherwise = actions;
+        }
+      }
+      if (otherwise == null) {
+        String lastCond = cond;
+        List<ScAction> lastActions = actions;
+        branches.add(guarded(el, () -> new ScAction.Branch(lastCond, lastActions)));
+      }
+      List<ScAction> orElse = otherwise == null ? List.of() : otherwise;
+      return guarded(el, () -> new ScAction.If(branches, orElse));
+    }
+
+    private static String requiredExpression(El el, String attribute) {
+      el.required(attribute);
+      return requireNonNull(expression(el, attribute));
+    }
+
+    /**
+     * The value of {@code attribute}, stripped, if it is in the condition language; null when
+     * absent. Anything else (ECMAScript beyond the language, a data model's variable) is refused
+     * here, with the construct and the line.
+     */
+    private static @Nullable String expression(El el, String attribute) {
+      String value = el.attr(attribute);
+      if (value == null) {
+        return null;
+      }
+      String text = value.strip();
+      try {
+        Condition.parse(text);
+      } catch (IllegalArgumentException e) {
+        throw new ScxmlException(
+            attribute
+                + " of <"
+                + el.tag()
+                + "> is not in the condition language: "
+                + e.getMessage(),
+            el.line());
+      }
+      return text;
     }
 
     /** The SCXML local name of {@code el}, refusing elements of other namespaces. */

@@ -103,6 +103,7 @@ final class ScxmlWriter {
             && node.onExit().isEmpty()
             && node.historyDefault().isEmpty()
             && node.children().isEmpty()
+            && node.doneData() == null
             && transitions.isEmpty();
     if (empty) {
       out.append("/>\n");
@@ -116,6 +117,12 @@ final class ScxmlWriter {
     }
     content("onentry", node.onEntry(), depth + 1);
     content("onexit", node.onExit(), depth + 1);
+    ScData done = node.doneData();
+    if (done != null) {
+      indent(depth + 1).append("<donedata>\n");
+      data(done, depth + 2);
+      indent(depth + 1).append("</donedata>\n");
+    }
     if (!node.historyDefault().isEmpty()) {
       defaultTransition(node.historyDefault(), node.defaultActions(), depth + 1);
     }
@@ -203,12 +210,79 @@ final class ScxmlWriter {
           }
           out.append("/>\n");
         }
+        case ScAction.Send send -> send(send, depth);
+        case ScAction.If i -> {
+          for (int b = 0; b < i.branches().size(); b++) {
+            ScAction.Branch branch = i.branches().get(b);
+            indent(depth)
+                .append(b == 0 ? "<if" : "<elseif")
+                .append(" cond=\"")
+                .append(escape(branch.cond()))
+                .append(b == 0 ? "\">\n" : "\"/>\n");
+            actions(branch.actions(), depth + 1);
+          }
+          if (!i.otherwise().isEmpty()) {
+            indent(depth).append("<else/>\n");
+            actions(i.otherwise(), depth + 1);
+          }
+          indent(depth).append("</if>\n");
+        }
       }
+    }
+  }
+
+  private void send(ScAction.Send send, int depth) {
+    indent(depth).append("<send");
+    if (send.event() != null) {
+      out.append(" event=\"").append(escape(send.event())).append('"');
+    }
+    if (send.eventExpr() != null) {
+      out.append(" eventexpr=\"").append(escape(send.eventExpr())).append('"');
+    }
+    if (send.internal()) {
+      out.append(" target=\"").append(Scxml.INTERNAL_TARGET).append('"');
+    }
+    ScData data = send.data();
+    if (data == null) {
+      out.append("/>\n");
+      return;
+    }
+    out.append(">\n");
+    data(data, depth + 1);
+    indent(depth).append("</send>\n");
+  }
+
+  /** {@code <param>}s or a {@code <content>}. */
+  private void data(ScData data, int depth) {
+    switch (data) {
+      case ScData.Params p -> {
+        for (ScData.Param param : p.params()) {
+          indent(depth)
+              .append("<param name=\"")
+              .append(escape(param.name()))
+              .append("\" expr=\"")
+              .append(escape(param.expr()))
+              .append("\"/>\n");
+        }
+      }
+      // The text as it is, white space included: a reader gives it back unchanged.
+      case ScData.Text t ->
+          indent(depth).append("<content>").append(escapeText(t.text())).append("</content>\n");
+      case ScData.Expr e ->
+          indent(depth).append("<content expr=\"").append(escape(e.expr())).append("\"/>\n");
     }
   }
 
   private StringBuilder indent(int depth) {
     return out.append("  ".repeat(depth));
+  }
+
+  /**
+   * Text in an element: a parser keeps its white space but would turn a carriage return into a line
+   * feed.
+   */
+  private static String escapeText(String s) {
+    return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\r", "&#13;");
   }
 
   private static String escape(String s) {

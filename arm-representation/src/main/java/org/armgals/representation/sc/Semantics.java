@@ -5,6 +5,7 @@ import static java.util.Objects.requireNonNull;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collection;
+import java.util.Collections;
 import java.util.Deque;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
@@ -20,20 +21,36 @@ import org.jspecify.annotations.Nullable;
 /**
  * The step semantics of a chart: the algorithm of the W3C SCXML recommendation (appendix D) for the
  * supported subset. A microstep takes a set of transitions at once (all exits, then every
- * transition's content in order, then all entries); a macrostep ({@link Run}) takes eventless
- * transitions and the internal queue's events to completion. Pure: every method answers new values;
- * a {@link Run} is confined to the thread that made it.
+ * transition's content in order, then all entries); a macrostep takes eventless transitions and the
+ * internal queue's events to completion; a {@link Run} takes macrosteps until the external queue
+ * holds none of the events the chart sent itself. Pure: every method answers new values; a {@link
+ * Run} is confined to the thread that made it.
  */
 final class Semantics {
-  /** More microsteps than this in one macrostep is taken for a loop. */
+  /** More microsteps than this in one run is taken for a loop. */
   static final int MAX_MICROSTEPS = 1_000;
+
+  /** The event the recommendation puts on the internal queue when executable content fails. */
+  static final String ERROR_EXECUTION = "error.execution";
+
+  /**
+   * An event on a queue: its name, and its data as conditions see it ({@code _event.data}): what it
+   * carries, or the trigger's input when it carries nothing of its own.
+   */
+  record Event(String name, @Nullable Object data) {}
 
   /**
    * What one microstep did: where it led, the actions to run (exits, transition content, entries;
    * then, when it finished the chart, the exits of the states still active), the events it put on
-   * the internal queue (raised ones and done events, in order), whether it finished the chart.
+   * the internal queue (raised and sent ones, done events, errors, in order) and on the external
+   * queue (sent ones), whether it finished the chart.
    */
-  record Micro(Configuration after, List<String> actions, List<String> raised, boolean finished) {}
+  record Micro(
+      Configuration after,
+      List<String> actions,
+      List<Event> internal,
+      List<Event> external,
+      boolean finished) {}
 
   final Chart chart;
   private final Map<String, Guard> guards;
@@ -44,7 +61,10 @@ final class Semantics {
     this.guards = Map.copyOf(guards);
   }
 
-  /** Checks that {@code t} fits the chart: its source, targets and condition exist. */
+  /**
+   * Checks that {@code t} fits the chart: its source, targets and condition exist, and the states
+   * its content's expressions name.
+   */
   void check(ScTransition t) {
     Node source = chart.node(t.source(), "source of transition '" + t.id() + "'");
     if (source.isHistory() || source.isFinal()) {
@@ -83,6 +103,51 @@ final class Semantics {
         chart.node(id, "In() of transition '" + t.id() + "'");
       }
     }
+    check(t.actions(), "transition '" + t.id() + "'");
+  }
+
+  /** Checks that the expressions of {@code content} name states of the chart in their In(). */
+  void check(List<ScAction> content, String where) {
+    for (ScAction a : content) {
+      switch (a) {
+        case ScAction.Run r -> {}
+        case ScAction.Raise r -> {}
+        case ScAction.Log l -> checkExpr(l.expr(), where);
+        case ScAction.Send send -> {
+          checkExpr(send.eventExpr(), where);
+          check(send.data(), where);
+        }
+        case ScAction.If i -> {
+          for (ScAction.Branch b : i.branches()) {
+            checkExpr(b.cond(), where);
+            check(b.actions(), where);
+          }
+          check(i.otherwise(), where);
+        }
+      }
+    }
+  }
+
+  /** Checks that the expressions of {@code data} name states of the chart in their In(). */
+  void check(@Nullable ScData data, String where) {
+    switch (data) {
+      case null -> {}
+      case ScData.Params p -> {
+        for (ScData.Param param : p.params()) {
+          checkExpr(param.expr(), where);
+        }
+      }
+      case ScData.Text t -> {}
+      case ScData.Expr e -> checkExpr(e.expr(), where);
+    }
+  }
+
+  private void checkExpr(@Nullable String expr, String where) {
+    if (expr != null) {
+      for (String id : condition(expr).states()) {
+        chart.node(id, "In() in the content of " + where);
+      }
+    }
   }
 
   private Condition condition(String cond) {
@@ -96,20 +161,20 @@ final class Semantics {
 
   /**
    * Whether the condition of {@code t} holds in {@code c}, the current event being {@code
-   * eventName} (null when unknown: before the first event, or in a replay by name) with the
-   * trigger's {@code input} as its data.
+   * eventName} (null when unknown: before the first event, or in a replay by name) with {@code
+   * data} as its data. A named guard sees {@code data} as its input.
    */
   boolean holds(
-      ScTransition t, Configuration c, @Nullable String eventName, @Nullable Object input) {
+      ScTransition t, Configuration c, @Nullable String eventName, @Nullable Object data) {
     String cond = t.cond();
     if (cond == null) {
       return true;
     }
     Guard g = guards.get(cond);
     if (g != null) {
-      return g.test(c, input);
+      return g.test(c, data);
     }
-    return condition(cond).holds(new Condition.Context(c, eventName, input));
+    return condition(cond).holds(new Condition.Context(c::isActive, eventName, data));
   }
 
   static boolean matches(ScTransition t, @Nullable String event) {
@@ -143,13 +208,13 @@ final class Semantics {
    * c} (selectTransitions and selectEventlessTransitions): for each active atomic state in document
    * order, the first transition of the state or of its nearest ancestor that matches and whose
    * condition holds; then conflicts removed, a transition from a descendant winning. Conditions see
-   * {@code eventName}, the current event.
+   * {@code eventName} and {@code data}, the current event's.
    */
   List<ScTransition> select(
       Configuration c,
       @Nullable String event,
       @Nullable String eventName,
-      @Nullable Object input,
+      @Nullable Object data,
       Map<String, List<ScTransition>> bySource) {
     Set<ScTransition> enabled = new LinkedHashSet<>();
     for (Node atomic : chart.nodes(c.active(), "active state")) {
@@ -162,7 +227,7 @@ final class Semantics {
       search:
       for (Node s : candidates) {
         for (ScTransition t : bySource.getOrDefault(s.id, List.of())) {
-          if (matches(t, event) && holds(t, c, eventName, input)) {
+          if (matches(t, event) && holds(t, c, eventName, data)) {
             enabled.add(t);
             break search;
           }
@@ -202,13 +267,19 @@ final class Semantics {
   /**
    * Takes the transitions {@code ts} together in {@code c} (microstep): records history and exits
    * the union of their exit sets, innermost first; runs their content in order; enters the union of
-   * their entry sets in document order.
+   * their entry sets in document order. The content sees {@code eventName} and {@code eventData} as
+   * the current event's; {@code input}, the trigger's input, is the data of the events it raises or
+   * sends without data of their own.
    */
-  Micro microstep(List<ScTransition> ts, Configuration c) {
+  Micro microstep(
+      List<ScTransition> ts,
+      Configuration c,
+      @Nullable String eventName,
+      @Nullable Object eventData,
+      @Nullable Object input) {
     TreeSet<Node> config = chart.nodes(c.active(), "active state");
     Map<String, List<String>> history = new LinkedHashMap<>(c.history());
-    List<String> actions = new ArrayList<>();
-    List<String> raised = new ArrayList<>();
+    Exec x = new Exec(config, eventName, eventData, input);
     TreeSet<Node> exits = new TreeSet<>(Chart.DOCUMENT_ORDER);
     for (ScTransition t : ts) {
       exits.addAll(exitSet(t, c.active(), c.history()));
@@ -230,11 +301,11 @@ final class Semantics {
       }
     }
     for (Node s : exitOrder) {
-      run(s.onExit, actions, raised);
+      x.block(s.onExit);
       config.remove(s);
     }
     for (ScTransition t : ts) {
-      run(t.actions(), actions, raised);
+      x.block(t.actions());
     }
     Entry toEnter = new Entry(history);
     for (ScTransition t : ts) {
@@ -248,11 +319,11 @@ final class Semantics {
         }
       }
     }
-    boolean finished = enter(toEnter, config, actions, raised);
-    return new Micro(configuration(config, history), List.copyOf(actions), raised, finished);
+    boolean finished = enter(toEnter, x);
+    return x.micro(configuration(config, history), finished);
   }
 
-  /** The initial entry: the states entered first, their entry actions and raised events. */
+  /** The initial entry: the states entered first, their entry actions and the events they queue. */
   Micro start() {
     Map<String, List<String>> history = new LinkedHashMap<>();
     for (Node h : chart.histories) {
@@ -266,10 +337,9 @@ final class Semantics {
       addAncestors(s, chart.root, toEnter);
     }
     TreeSet<Node> config = new TreeSet<>(Chart.DOCUMENT_ORDER);
-    List<String> actions = new ArrayList<>();
-    List<String> raised = new ArrayList<>();
-    boolean finished = enter(toEnter, config, actions, raised);
-    return new Micro(configuration(config, history), List.copyOf(actions), raised, finished);
+    Exec x = new Exec(config, null, null, null);
+    boolean finished = enter(toEnter, x);
+    return x.micro(configuration(config, history), finished);
   }
 
   /**
@@ -287,42 +357,49 @@ final class Semantics {
     }
   }
 
-  /** Enters {@code toEnter} in document order; whether a top-level final state was entered. */
-  private boolean enter(
-      Entry toEnter, TreeSet<Node> config, List<String> actions, List<String> raised) {
+  /**
+   * Enters {@code toEnter} in document order, running the content with {@code x}; whether a
+   * top-level final state was entered.
+   */
+  private boolean enter(Entry toEnter, Exec x) {
     boolean finished = false;
     for (Node s : toEnter.states) {
-      config.add(s);
-      run(s.onEntry, actions, raised);
+      x.config.add(s);
+      x.block(s.onEntry);
       if (toEnter.byDefault.contains(s)) {
-        run(s.defaultActions, actions, raised);
+        x.block(s.defaultActions);
       }
-      run(toEnter.historyContent.getOrDefault(s, List.of()), actions, raised);
+      x.block(toEnter.historyContent.getOrDefault(s, List.of()));
       if (s.isFinal()) {
         Node parent = requireNonNull(s.parent);
         if (parent == chart.root) {
+          // Its done data would go with done.invoke to an invoking session, which there is not.
           finished = true;
         } else {
-          raised.add("done.state." + parent.id);
+          x.done(parent, s.doneData);
           Node grand = parent.parent;
           if (grand != null && grand.isParallel()) {
             boolean all = true;
             for (Node region : grand.stateChildren()) {
-              all &= inFinalState(region, config);
+              all &= inFinalState(region, x.config);
             }
             if (all) {
-              raised.add("done.state." + grand.id);
+              x.done(grand, null);
             }
           }
         }
       }
     }
     if (finished) {
-      // exitInterpreter: the states still active are exited, innermost first; the configuration
-      // keeps them, so that the finished chart shows where it ended.
-      for (Node s : config.descendingSet()) {
-        run(s.onExit, actions, new ArrayList<>());
+      // exitInterpreter: the states still active are exited, innermost first, and what their
+      // content queues is dropped; the configuration keeps them, so that the finished chart shows
+      // where it ended.
+      Exec end = new Exec(new TreeSet<>(x.config), x.eventName, x.eventData, x.input);
+      for (Node s : x.config.descendingSet()) {
+        end.block(s.onExit);
+        end.config.remove(s);
       }
+      x.actions.addAll(end.actions);
     }
     return finished;
   }
@@ -347,15 +424,110 @@ final class Semantics {
     return false;
   }
 
-  private static void run(List<ScAction> content, List<String> actions, List<String> raised) {
-    for (ScAction a : content) {
-      switch (a) {
-        case ScAction.Run r -> actions.add(r.name());
-        case ScAction.Raise r -> raised.add(r.event());
-        case ScAction.Log l -> {
-          // No effect: decision 0049.
+  /**
+   * Executable content as a microstep runs it: the configuration it sees (which changes as states
+   * are exited and entered), the event being processed, and what the content does.
+   */
+  private final class Exec {
+    final TreeSet<Node> config;
+    final @Nullable String eventName;
+    final @Nullable Object eventData;
+    final @Nullable Object input;
+    final List<String> actions = new ArrayList<>();
+    final List<Event> internal = new ArrayList<>();
+    final List<Event> external = new ArrayList<>();
+
+    Exec(
+        TreeSet<Node> config,
+        @Nullable String eventName,
+        @Nullable Object eventData,
+        @Nullable Object input) {
+      this.config = config;
+      this.eventName = eventName;
+      this.eventData = eventData;
+      this.input = input;
+    }
+
+    Micro micro(Configuration after, boolean finished) {
+      return new Micro(
+          after, List.copyOf(actions), List.copyOf(internal), List.copyOf(external), finished);
+    }
+
+    private Condition.Context context() {
+      return new Condition.Context(
+          id -> {
+            Node n = chart.byId.get(id);
+            return n != null && config.contains(n);
+          },
+          eventName,
+          eventData);
+    }
+
+    /** Runs a block (an onentry, an onexit, a transition's content); an error ends it. */
+    void block(List<ScAction> content) {
+      run(content);
+    }
+
+    /** done.state.{@code state}, with {@code data} evaluated now. */
+    void done(Node state, @Nullable ScData data) {
+      internal.add(new Event("done.state." + state.id, data == null ? input : data(data)));
+    }
+
+    /** Runs {@code content} in order; false when an error stopped it (W3C 4.9). */
+    private boolean run(List<ScAction> content) {
+      for (ScAction a : content) {
+        boolean ok =
+            switch (a) {
+              case ScAction.Run r -> actions.add(r.name());
+              case ScAction.Raise r -> internal.add(new Event(r.event(), input));
+              case ScAction.Log l -> true; // No effect: decision 0049.
+              case ScAction.Send send -> send(send);
+              case ScAction.If i -> branch(i);
+            };
+        if (!ok) {
+          return false;
         }
       }
+      return true;
+    }
+
+    private boolean branch(ScAction.If i) {
+      for (ScAction.Branch b : i.branches()) {
+        if (condition(b.cond()).holds(context())) {
+          return run(b.actions());
+        }
+      }
+      return run(i.otherwise());
+    }
+
+    /** Queues the event {@code send} names; an error when its expression names none. */
+    private boolean send(ScAction.Send send) {
+      String name = send.event();
+      if (name == null) {
+        name = Condition.text(condition(requireNonNull(send.eventExpr())).value(context()));
+        if (name == null || name.isEmpty() || name.chars().anyMatch(Character::isWhitespace)) {
+          internal.add(new Event(ERROR_EXECUTION, input));
+          return false;
+        }
+      }
+      ScData data = send.data();
+      Event event = new Event(name, data == null ? input : data(data));
+      return send.internal() ? internal.add(event) : external.add(event);
+    }
+
+    /** The value of {@code data} now: a map of the params' values, or the content's value. */
+    private @Nullable Object data(ScData data) {
+      return switch (data) {
+        case ScData.Params p -> {
+          Map<String, @Nullable Object> values = new LinkedHashMap<>();
+          for (ScData.Param param : p.params()) {
+            values.put(param.name(), condition(param.expr()).value(context()));
+          }
+          yield Collections.unmodifiableMap(values);
+        }
+        case ScData.Text t -> ContentText.value(t.text());
+        case ScData.Expr e -> condition(e.expr()).value(context());
+      };
     }
   }
 
@@ -498,25 +670,34 @@ final class Semantics {
   }
 
   /**
-   * A macrostep in the making (the recommendation's mainEventLoop between two external events): the
-   * microsteps taken and the internal queue. Every condition sees the trigger's input as the
-   * event's data. Confined to the thread that made it.
+   * The recommendation's mainEventLoop from one external event until the chart waits for the next:
+   * the microsteps taken, the internal queue, and the external queue of the events the chart sent
+   * itself. Conditions see the data of the event being processed (for eventless transitions, of the
+   * last one); an event that carries none of its own has the trigger's input. Confined to the
+   * thread that made it.
    */
   final class Run {
     private final Map<String, List<ScTransition>> bySource;
     private final @Nullable Object input;
     private final List<Taken> taken = new ArrayList<>();
-    private final Deque<String> internal = new ArrayDeque<>();
+    private final Deque<Event> internal = new ArrayDeque<>();
+    private final Deque<Event> external = new ArrayDeque<>();
     private Configuration current;
-    private @Nullable String event;
+    private @Nullable Event event;
 
+    /**
+     * A run from {@code from}, with {@code internal} and {@code external} queued (by the start),
+     * {@code input} being the trigger's input.
+     */
     Run(
         Configuration from,
-        Collection<String> raised,
+        Collection<Event> internal,
+        Collection<Event> external,
         Map<String, List<ScTransition>> bySource,
         @Nullable Object input) {
       this.current = from;
-      this.internal.addAll(raised);
+      this.internal.addAll(internal);
+      this.external.addAll(external);
       this.bySource = bySource;
       this.input = input;
     }
@@ -531,13 +712,32 @@ final class Semantics {
       return taken;
     }
 
-    /** Takes what the external {@code event} enables, if anything. */
+    /** Takes what the external {@code trigger}, with the run's input as its data, enables. */
     void external(String trigger) {
+      take(new Event(trigger, input));
+    }
+
+    /**
+     * Macrosteps until the chart waits: eventless transitions and the internal queue's events to
+     * completion, then the next event the chart sent itself, until none is left.
+     *
+     * @throws RepresentationException after more than {@value #MAX_MICROSTEPS} microsteps
+     */
+    void complete() {
+      settle();
+      for (Event next = external.poll(); next != null; next = external.poll()) {
+        take(next);
+        settle();
+      }
+    }
+
+    private void take(Event e) {
       if (finished(current)) {
+        external.clear();
         return;
       }
-      event = trigger;
-      List<ScTransition> ts = select(current, trigger, trigger, input, bySource);
+      event = e;
+      List<ScTransition> ts = select(current, e.name(), e.name(), e.data(), bySource);
       if (!ts.isEmpty()) {
         take(ts);
       }
@@ -550,34 +750,45 @@ final class Semantics {
      */
     void settle() {
       while (!finished(current)) {
-        List<ScTransition> ts = select(current, null, event, input, bySource);
+        Event last = event;
+        List<ScTransition> ts =
+            select(
+                current,
+                null,
+                last == null ? null : last.name(),
+                last == null ? input : last.data(),
+                bySource);
         if (ts.isEmpty()) {
-          String next = internal.poll();
+          Event next = internal.poll();
           if (next == null) {
             return;
           }
           event = next;
-          ts = select(current, next, next, input, bySource);
+          ts = select(current, next.name(), next.name(), next.data(), bySource);
         }
         if (!ts.isEmpty()) {
           take(ts);
         }
       }
       internal.clear();
+      external.clear();
     }
 
     private void take(List<ScTransition> ts) {
       if (taken.size() >= MAX_MICROSTEPS) {
         throw new RepresentationException(
-            "a run-to-completion step took more than "
+            "a dispatch took more than "
                 + MAX_MICROSTEPS
                 + " microsteps, the last "
                 + taken.subList(taken.size() - 3, taken.size()).stream().map(Taken::name).toList()
-                + "; expected eventless transitions and raised events to come to rest");
+                + "; expected eventless transitions and raised or sent events to come to rest");
       }
-      Micro micro = microstep(ts, current);
+      Event e = event;
+      Micro micro =
+          microstep(ts, current, e == null ? null : e.name(), e == null ? input : e.data(), input);
       taken.add(new Taken(List.copyOf(ts), current, micro));
-      internal.addAll(micro.raised());
+      internal.addAll(micro.internal());
+      external.addAll(micro.external());
       current = micro.after();
     }
   }

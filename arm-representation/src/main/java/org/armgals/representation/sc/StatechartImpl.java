@@ -43,15 +43,23 @@ final class StatechartImpl implements Statechart {
       bySource.computeIfAbsent(t.source(), s -> new ArrayList<>()).add(t);
     }
     this.transitions = bound;
+    for (Node n : semantics.chart.byId.values()) {
+      String where = "state '" + n.id + "'";
+      semantics.check(n.onEntry, where);
+      semantics.check(n.onExit, where);
+      semantics.check(n.defaultActions, where);
+      semantics.check(n.doneData, where);
+    }
     // The recommendation's start: the initial entry, then eventless transitions and the events it
-    // raised (done events included) to completion, with no event and no input.
+    // queued (done events included) to completion, then the events it sent itself, with no event
+    // and no input.
     Semantics.Micro start = semantics.start();
     List<String> actions = new ArrayList<>(start.actions());
     Configuration at = start.after();
     if (!start.finished()) {
-      Semantics.Run run = semantics.new Run(at, start.raised(), bySource, null);
+      Semantics.Run run = semantics.new Run(at, start.internal(), start.external(), bySource, null);
       try {
-        run.settle();
+        run.complete();
       } catch (RepresentationException e) {
         throw new IllegalArgumentException(
             "chart '" + definition.name() + "' does not come to rest at start: " + e.getMessage(),

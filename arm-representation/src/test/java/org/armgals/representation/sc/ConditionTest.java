@@ -20,7 +20,7 @@ class ConditionTest {
       new Configuration(new LinkedHashSet<>(List.of("P", "A")), Map.of());
 
   private static boolean holds(String cond, @Nullable String event, @Nullable Object data) {
-    return Condition.parse(cond).holds(new Condition.Context(IN_A, event, data));
+    return Condition.parse(cond).holds(new Condition.Context(IN_A::isActive, event, data));
   }
 
   @Test

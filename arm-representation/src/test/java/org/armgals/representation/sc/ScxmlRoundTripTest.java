@@ -125,7 +125,9 @@ class ScxmlRoundTripTest {
     String id = "s" + next[0]++;
     int kind = depth > 2 ? 0 : random.nextInt(4);
     if (kind == 3 && !inParallel) {
-      return ScNode.finalState(id).onEntry(actions(random));
+      ScNode end = ScNode.finalState(id).onEntry(actions(random));
+      ScData[] done = data();
+      return random.nextBoolean() ? end : end.withDoneData(done[random.nextInt(done.length)]);
     }
     sources.add(id);
     if (kind == 0 || kind == 3) {
@@ -157,14 +159,37 @@ class ScxmlRoundTripTest {
     return node;
   }
 
+  /** Event data of every kind, text with markup, white space and line breaks included. */
+  private static ScData[] data() {
+    return new ScData[] {
+      ScData.params(
+          ScData.param("a b", "1"),
+          ScData.param("k", "_event.data.k"),
+          ScData.param("k", "In('s0')")),
+      ScData.text("  {\"a\": [1, 2]}\r\n\t<x> & ]]> y  "),
+      ScData.text(""),
+      ScData.expr("'v' == _event.name")
+    };
+  }
+
   /** Zero to two actions of any kind, text with markup, tabs and line breaks included. */
   private static ScAction[] actions(Random random) {
+    ScData[] data = data();
     ScAction[] all = {
       ScAction.run("a&b"),
       ScAction.raise("r.x"),
       ScAction.log("<\"label\">", "_event.data.n >= 2 &&\n\t'x' != \"y\""),
       ScAction.log(null, null),
-      ScAction.log("only", null)
+      ScAction.log("only", null),
+      ScAction.send("e.x"),
+      ScAction.send("go").toInternalQueue().with(data[random.nextInt(data.length)]),
+      ScAction.sendExpr("_event.data.next").with(data[random.nextInt(data.length)]),
+      ScAction.when("In('s1') && true", ScAction.run("y"))
+          .orElseIf("false")
+          .orElseIf("_event.data.x < 3", ScAction.raise("z"), ScAction.send("w")),
+      ScAction.when(
+              "true", ScAction.when("!false", ScAction.send("deep")).orElse(ScAction.run("no")))
+          .orElse()
     };
     ScAction[] chosen = new ScAction[random.nextInt(3)];
     for (int i = 0; i < chosen.length; i++) {

@@ -37,20 +37,20 @@ class W3cAlgorithmTest {
     }
   }
 
-  private static Statechart chart(String name) {
+  static Statechart chart(String name) {
     return Statechart.of(Scxml.read(resource("w3c/" + name + ".scxml")));
   }
 
-  private static Activation<Configuration> start(Statechart chart) {
+  static Activation<Configuration> start(Statechart chart) {
     return chart.activate(chart.initialState(), chart.transitions());
   }
 
-  private static List<String> atomic(Statechart chart, Configuration c) {
+  static List<String> atomic(Statechart chart, Configuration c) {
     Chart tree = ((StatechartImpl) chart).semantics.chart;
     return c.active().stream().filter(id -> tree.byId.get(id).isAtomic()).toList();
   }
 
-  private static void passesAtStart(String test) {
+  static void passesAtStart(String test) {
     Statechart chart = chart(test);
     assertThat(chart.initialState().active()).as(test).containsExactly("pass");
     assertThat(chart.isFinished(chart.initialState())).isTrue();
