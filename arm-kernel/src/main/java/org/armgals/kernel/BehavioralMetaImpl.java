@@ -17,6 +17,7 @@ import org.armgals.active.ObjectStoppedException;
 import org.armgals.kernel.spi.MetaContext;
 import org.armgals.kernel.spi.MetaPolicy;
 import org.armgals.representation.State;
+import org.armgals.representation.p.PState;
 import org.jspecify.annotations.Nullable;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -26,7 +27,7 @@ import org.slf4j.LoggerFactory;
  * damping of its adaptations. Models and filters are confined to its object; {@link #views} is what
  * other threads (JMX) read.
  */
-final class BehavioralMetaImpl extends EntityImpl<FieldState> implements BehavioralMeta {
+final class BehavioralMetaImpl extends EntityImpl<PState> implements BehavioralMeta {
   private static final Logger LOG = LoggerFactory.getLogger(BehavioralMetaImpl.class);
 
   private final MetaPolicy policy;
@@ -42,8 +43,8 @@ final class BehavioralMetaImpl extends EntityImpl<FieldState> implements Behavio
   BehavioralMetaImpl(
       KernelImpl kernel,
       String name,
-      StructuralMetaImpl<FieldState> meta,
-      EntityServant<FieldState> servant,
+      StructuralMetaImpl<PState> meta,
+      EntityServant<PState> servant,
       MetaPolicy policy,
       Damping damping) {
     super(kernel, name, meta, servant);

@@ -20,6 +20,8 @@ import org.armgals.presence.spi.PresenceListener;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.State;
 import org.armgals.representation.StateSpace;
+import org.armgals.representation.p.PSpace;
+import org.armgals.representation.p.PState;
 import org.jspecify.annotations.Nullable;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -42,9 +44,9 @@ final class KernelImpl implements Kernel {
   private volatile boolean closed;
 
   // Set by bootstrap before the kernel is published: the kernel entities refer to each other.
-  private StructuralMetaImpl<FieldState> entity;
-  private StructuralMetaImpl<FieldState> structural;
-  private StructuralMetaImpl<FieldState> behavioral;
+  private StructuralMetaImpl<PState> entity;
+  private StructuralMetaImpl<PState> structural;
+  private StructuralMetaImpl<PState> behavioral;
   private BehavioralMetaImpl basic;
 
   private static final EntityOptions KERNEL_OPTIONS =
@@ -77,52 +79,66 @@ final class KernelImpl implements Kernel {
             BASIC_BEHAVIORAL_META,
             k.behavioral,
             k.servant(
-                KernelBehaviors.behavioral(BASIC_BEHAVIORAL_META), KernelBehaviors.BEHAVIORAL),
+                KernelBehaviors.BEHAVIORAL_SPACE,
+                KernelBehaviors.behavioral(BASIC_BEHAVIORAL_META),
+                KernelBehaviors.BEHAVIORAL),
             MetaPolicy.MODEL_ONLY,
             Damping.none());
-    for (EntityImpl<FieldState> e : List.of(k.structural, k.entity, k.behavioral)) {
+    for (EntityImpl<PState> e : List.of(k.structural, k.entity, k.behavioral)) {
       k.structural.adopt(e);
     }
     k.behavioral.adopt(k.basic);
-    for (EntityImpl<FieldState> e : List.of(k.structural, k.entity, k.behavioral, k.basic)) {
+    for (EntityImpl<PState> e : List.of(k.structural, k.entity, k.behavioral, k.basic)) {
       k.reserve(e.name());
       e.start(KERNEL_OPTIONS.config());
       k.register(e);
     }
-    for (EntityImpl<FieldState> e : List.of(k.structural, k.entity, k.behavioral)) {
+    for (EntityImpl<PState> e : List.of(k.structural, k.entity, k.behavioral)) {
       k.structural.describe(KernelBehaviors.NEW_INSTANCE, e.name());
     }
     k.behavioral.describe(KernelBehaviors.NEW_INSTANCE, k.basic.name());
-    for (EntityImpl<FieldState> e : List.of(k.structural, k.entity, k.behavioral, k.basic)) {
+    for (EntityImpl<PState> e : List.of(k.structural, k.entity, k.behavioral, k.basic)) {
       k.basic.addBaseLevelEntity(e).touch();
       e.settle();
     }
     return k;
   }
 
-  private StructuralMetaImpl<FieldState> kernelMeta(
-      String name, Behaviors<FieldState> ofInstances, List<String> ownBehaviorNames) {
-    StructuralMetaImpl.Makes makes =
-        switch (name) {
-          case STRUCTURAL_META -> StructuralMetaImpl.Makes.STRUCTURAL_METAS;
-          case BEHAVIORAL_META -> StructuralMetaImpl.Makes.BEHAVIORAL_METAS;
-          default -> StructuralMetaImpl.Makes.ENTITIES;
-        };
+  private StructuralMetaImpl<PState> kernelMeta(
+      String name, Behaviors<PState> ofInstances, List<String> ownBehaviorNames) {
+    StructuralMetaImpl.Makes makes;
+    PSpace space;
+    switch (name) {
+      case STRUCTURAL_META -> {
+        makes = StructuralMetaImpl.Makes.STRUCTURAL_METAS;
+        space = KernelBehaviors.STRUCTURAL_SPACE;
+      }
+      case BEHAVIORAL_META -> {
+        makes = StructuralMetaImpl.Makes.BEHAVIORAL_METAS;
+        space = KernelBehaviors.BEHAVIORAL_SPACE;
+      }
+      default -> {
+        makes = StructuralMetaImpl.Makes.ENTITIES;
+        space = KernelBehaviors.ENTITY_SPACE;
+      }
+    }
     return new StructuralMetaImpl<>(
         this,
         name,
         null,
         servant(
+            KernelBehaviors.STRUCTURAL_SPACE,
             KernelBehaviors.structural(name, List.copyOf(ofInstances.names())),
             KernelBehaviors.STRUCTURAL),
-        FieldSpace.INSTANCE,
+        space,
         ofInstances,
         null,
         makes);
   }
 
-  private EntityServant<FieldState> servant(FieldState initial, Behaviors<FieldState> behaviors) {
-    return new EntityServant<>(FieldSpace.INSTANCE.activate(initial, behaviors), KERNEL_OPTIONS);
+  /** The servant of a kernel meta-entity: its description in {@code space} and its methods. */
+  private EntityServant<PState> servant(PSpace space, PState initial, Behaviors<PState> behaviors) {
+    return new EntityServant<>(space.activate(initial, behaviors), KERNEL_OPTIONS);
   }
 
   @Override
@@ -130,8 +146,8 @@ final class KernelImpl implements Kernel {
       String name, StateSpace<S> space, Behaviors<S> behaviors) {
     requireNonNull(space, "space");
     requireNonNull(behaviors, "behaviors");
-    StructuralMetaImpl<FieldState> of = structural;
-    StructuralMetaImpl<FieldState> parent = entity;
+    StructuralMetaImpl<PState> of = structural;
+    StructuralMetaImpl<PState> parent = entity;
     StructuralMetaImpl<S> made =
         of.instantiate(
             name,
@@ -182,7 +198,7 @@ final class KernelImpl implements Kernel {
   public BehavioralMeta newBehavioralMeta(String name, MetaPolicy policy, Damping damping) {
     requireNonNull(policy, "policy");
     requireNonNull(damping, "damping");
-    StructuralMetaImpl<FieldState> of = behavioral;
+    StructuralMetaImpl<PState> of = behavioral;
     BehavioralMetaImpl made =
         of.instantiate(
             name,

@@ -18,6 +18,7 @@ import org.armgals.representation.Behavior;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.State;
 import org.armgals.representation.StateSpace;
+import org.armgals.representation.p.PState;
 import org.jspecify.annotations.Nullable;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -29,7 +30,7 @@ import org.slf4j.LoggerFactory;
  * <p>The behaviors and the list of instances change under {@link #lock}, so that an instance made
  * concurrently with a change either starts with the new behaviors or is harmonized with them.
  */
-final class StructuralMetaImpl<S extends State> extends EntityImpl<FieldState>
+final class StructuralMetaImpl<S extends State> extends EntityImpl<PState>
     implements StructuralMeta<S> {
 
   /** What its instances are: plain entities, or meta-entities made by the kernel itself. */
@@ -53,8 +54,8 @@ final class StructuralMetaImpl<S extends State> extends EntityImpl<FieldState>
   StructuralMetaImpl(
       KernelImpl kernel,
       String name,
-      @Nullable StructuralMetaImpl<FieldState> meta,
-      EntityServant<FieldState> servant,
+      @Nullable StructuralMetaImpl<PState> meta,
+      EntityServant<PState> servant,
       StateSpace<S> space,
       Behaviors<S> behaviors,
       @Nullable StructuralMetaImpl<?> superMeta,
