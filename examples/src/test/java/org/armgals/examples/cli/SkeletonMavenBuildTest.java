@@ -64,7 +64,7 @@ class SkeletonMavenBuildTest {
     assertThat(maven.exitValue()).as(out).isZero();
     assertThat(out)
         .as(out)
-        .contains("Tests run: 1, Failures: 0, Errors: 0, Skipped: 0")
+        .contains("Tests run: 2, Failures: 0, Errors: 0, Skipped: 0")
         .contains("summary of mybot:")
         .containsPattern("robot cycles +100");
     assertThat(project.resolve("runs/mybot/trace.jsonl")).isNotEmptyFile();
