@@ -45,6 +45,12 @@ public interface ActiveRuntimeMXBean {
   /** Inbound transport messages rejected: the dead-letter count. */
   long getTransportRejected();
 
+  /** Transport messages found missing by the gaps in their routes' sequence numbers. */
+  long getTransportLost();
+
+  /** Transport messages accepted but never handed to the broker. */
+  long getTransportUnsent();
+
   /** Worker threads alive (more than the configured number while some are blocked). */
   int getWorkers();
 }

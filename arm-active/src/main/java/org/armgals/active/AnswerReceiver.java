@@ -7,6 +7,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.LongAdder;
 import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 import java.util.function.IntSupplier;
 import org.apache.activemq.artemis.api.core.ActiveMQInterruptedException;
@@ -42,14 +43,13 @@ final class AnswerReceiver implements ValueFuture.Receiver, AutoCloseable {
   /** How long the receiving thread waits after a failed {@code receive} before it tries again. */
   private static final long BACKOFF_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
 
-  private static final int LOGGED_FAILURES = 20;
-
   /** Whether a virtual thread may wait inside the client's {@code receive} without pinning. */
   static final boolean VIRTUAL_THREADS_MAY_LEAD = Runtime.version().feature() >= 24;
 
   private final MessageConsumer consumer;
   private final Consumer<Message> handler;
   private final IntSupplier due;
+  private final BooleanSupplier connected;
   private final TimeSource time;
   private final String name;
   private final ReentrantLock lead = new ReentrantLock();
@@ -57,13 +57,17 @@ final class AnswerReceiver implements ValueFuture.Receiver, AutoCloseable {
   private final LongAdder byWaiters = new LongAdder();
   private final LongAdder byOwnThread = new LongAdder();
   private final LongAdder failures = new LongAdder();
+  private final LogLimiter failureLog = new LogLimiter();
   private volatile @Nullable Thread leader;
   private volatile boolean closed;
+  private volatile boolean drain;
 
   /**
    * @param consumer a synchronous consumer of this transport's answers, on a session of its own
    * @param handler takes one answer; never throws
    * @param due how many answers are awaited (requests and look-ups whose answer has not come)
+   * @param connected whether the connection is up: while it is not, a {@code receive} may wait for
+   *     the reconnection, so no waiter leads (the transport's own thread does)
    * @param time the transport's time, which waiters' deadlines are read on
    * @param name names the receiving thread
    */
@@ -71,11 +75,13 @@ final class AnswerReceiver implements ValueFuture.Receiver, AutoCloseable {
       MessageConsumer consumer,
       Consumer<Message> handler,
       IntSupplier due,
+      BooleanSupplier connected,
       TimeSource time,
       String name) {
     this.consumer = consumer;
     this.handler = handler;
     this.due = due;
+    this.connected = connected;
     this.time = time;
     this.name = name;
     this.receiving =
@@ -94,7 +100,8 @@ final class AnswerReceiver implements ValueFuture.Receiver, AutoCloseable {
     if (closed) {
       return false;
     }
-    if (Thread.currentThread().isVirtual() && !VIRTUAL_THREADS_MAY_LEAD) {
+    if ((Thread.currentThread().isVirtual() && !VIRTUAL_THREADS_MAY_LEAD)
+        || !connected.getAsBoolean()) {
       observe();
       return false;
     }
@@ -137,9 +144,14 @@ final class AnswerReceiver implements ValueFuture.Receiver, AutoCloseable {
     }
   }
 
-  /** Called at every sweep of the reply timeouts: answers nobody waits for are received too. */
+  /**
+   * Called at every sweep of the reply timeouts: whatever came in meanwhile is received, answers
+   * nobody waits for included, even when no answer is due, so that nothing sent to this transport
+   * piles up on the broker unread and uncounted.
+   */
   void nudge() {
-    observe();
+    drain = true;
+    LockSupport.unpark(receiving);
   }
 
   /** The thread receiving answers now, if any. */
@@ -166,11 +178,15 @@ final class AnswerReceiver implements ValueFuture.Receiver, AutoCloseable {
   /** The transport's receiving thread: leads whenever answers are due and nobody else leads. */
   private void receiveWhileDue() {
     while (!closed) {
-      if (due.getAsInt() > 0 && lead.tryLock()) {
+      if ((due.getAsInt() > 0 || drain) && lead.tryLock()) {
         boolean failed = false;
         leader = receiving;
         try {
-          while (!closed && due.getAsInt() > 0) {
+          if (drain && connected.getAsBoolean()) {
+            drain = false;
+            failed = !receiveWhatIsThere();
+          }
+          while (!failed && !closed && due.getAsInt() > 0) {
             if (!receiveOne(SLICE_MILLIS, byOwnThread)) {
               failed = true;
               break;
@@ -207,10 +223,30 @@ final class AnswerReceiver implements ValueFuture.Receiver, AutoCloseable {
         Thread.currentThread().interrupt();
       } else if (!closed) {
         failures.increment();
-        long n = failures.sum();
-        if (n <= LOGGED_FAILURES || n % 1_000 == 0) {
+        long n = failureLog.tick();
+        if (n > 0) {
           LOG.warn("JMS transport {}: receiving answers failed ({} so far)", name, n, e);
         }
+      }
+      return false;
+    }
+  }
+
+  /**
+   * Receives every message the client holds already, waiting a millisecond at most for each (no
+   * round trip to the broker, unlike {@code receiveNoWait}); false if a receive failed.
+   */
+  private boolean receiveWhatIsThere() {
+    try {
+      for (Message m = consumer.receive(1); m != null && !closed; m = consumer.receive(1)) {
+        byOwnThread.increment();
+        handler.accept(m);
+      }
+      return true;
+    } catch (JMSException | RuntimeException e) {
+      if (!closed) {
+        failures.increment();
+        LOG.debug("JMS transport {}: draining answers failed", name, e);
       }
       return false;
     }

@@ -3,7 +3,9 @@ package org.armgals.active;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.security.SecureRandom;
 import java.util.Comparator;
+import java.util.HexFormat;
 import java.util.Optional;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -27,26 +29,50 @@ final class EmbeddedArtemis implements EmbeddedBroker {
   private final EmbeddedActiveMQ server;
   private final String inVmUrl;
   private final @Nullable String nettyUrl;
-  private final Path dir;
+  private final String user;
+  private final String password;
+  private final @Nullable Path dir;
   private final AtomicBoolean closed = new AtomicBoolean();
 
   private EmbeddedArtemis(
-      EmbeddedActiveMQ server, String inVmUrl, @Nullable String nettyUrl, Path dir) {
+      EmbeddedActiveMQ server,
+      String inVmUrl,
+      @Nullable String nettyUrl,
+      String user,
+      String password,
+      @Nullable Path dir) {
     this.server = server;
     this.inVmUrl = inVmUrl;
     this.nettyUrl = nettyUrl;
+    this.user = user;
+    this.password = password;
     this.dir = dir;
   }
 
-  /** A started broker; {@code port} 0: in-VM only. */
-  static EmbeddedArtemis start(int port) {
+  /** A login for one run: a fixed user and 32 random hex digits. */
+  private static String generatedPassword() {
+    byte[] bytes = new byte[16];
+    new SecureRandom().nextBytes(bytes);
+    return HexFormat.of().formatHex(bytes);
+  }
+
+  /** A started broker. */
+  static EmbeddedArtemis start(EmbeddedBroker.Builder b) {
     int id = IDS.incrementAndGet() & 0x7fff_ffff;
     String inVm = "vm://" + id;
+    int port = b.port;
+    Path keyStore = b.keyStore;
     String netty = port > 0 ? "tcp://127.0.0.1:" + port : null;
+    String user = b.user != null ? b.user : "armgals";
+    String password = b.password != null ? b.password : generatedPassword();
+    Path journal = b.journal;
     Path dir;
     try {
-      // Persistence is off; paging of a full address still needs a directory.
-      dir = Files.createTempDirectory("armgals-broker-");
+      // Without a journal, paging of a full address still needs a directory.
+      dir =
+          journal != null
+              ? Files.createDirectories(journal)
+              : Files.createTempDirectory("armgals-broker-");
     } catch (IOException e) {
       throw new IllegalStateException("cannot make the embedded broker's directory", e);
     }
@@ -54,8 +80,15 @@ final class EmbeddedArtemis implements EmbeddedBroker {
     try {
       ConfigurationImpl c = new ConfigurationImpl();
       c.setName("armgals-" + id);
-      c.setPersistenceEnabled(false);
-      c.setSecurityEnabled(false);
+      c.setPersistenceEnabled(journal != null);
+      // An in-VM-only broker is reachable by this JVM's code alone: security would check nothing.
+      c.setSecurityEnabled(netty != null);
+      if (netty != null) {
+        // Every connection authenticates anew: an in-VM login must never stand for a network one.
+        c.setAuthenticationCacheSize(0);
+        c.setAuthorizationCacheSize(0);
+        server.setSecurityManager(new BrokerLogin(user, password));
+      }
       c.setJMXManagementEnabled(false);
       c.setGracefulShutdownEnabled(false);
       c.setBrokerInstance(dir.toFile());
@@ -65,7 +98,15 @@ final class EmbeddedArtemis implements EmbeddedBroker {
       c.setLargeMessagesDirectory(dir.resolve("large").toString());
       c.addAcceptorConfiguration("in-vm", inVm);
       if (netty != null) {
-        c.addAcceptorConfiguration("netty", netty);
+        c.addAcceptorConfiguration(
+            "netty",
+            keyStore == null
+                ? netty
+                : netty
+                    + "?sslEnabled=true;keyStorePath="
+                    + keyStore.toAbsolutePath()
+                    + ";keyStorePassword="
+                    + b.keyStorePassword);
       }
       server.setConfiguration(c);
       server.start();
@@ -74,7 +115,9 @@ final class EmbeddedArtemis implements EmbeddedBroker {
       }
     } catch (Exception e) {
       stopQuietly(server);
-      delete(dir);
+      if (journal == null) {
+        delete(dir);
+      }
       throw new IllegalStateException(
           "embedded Artemis broker did not start ("
               + inVm
@@ -83,8 +126,20 @@ final class EmbeddedArtemis implements EmbeddedBroker {
           e);
     }
     LIVE.incrementAndGet();
-    LOG.info("embedded Artemis broker started on {}{}", inVm, netty != null ? " and " + netty : "");
-    return new EmbeddedArtemis(server, inVm, netty, dir);
+    LOG.info(
+        "embedded Artemis broker started on {}{}{}",
+        inVm,
+        netty != null
+            ? " and " + netty + (keyStore != null ? " (TLS)" : "") + ", login required"
+            : "",
+        journal != null ? ", journal in " + journal : "");
+    return new EmbeddedArtemis(
+        server,
+        inVm,
+        netty == null ? null : keyStore == null ? netty : netty + "?sslEnabled=true",
+        user,
+        password,
+        journal == null ? dir : null);
   }
 
   /** The broker itself, for tests that watch what reaches it. */
@@ -103,10 +158,23 @@ final class EmbeddedArtemis implements EmbeddedBroker {
   }
 
   @Override
+  public String user() {
+    return user;
+  }
+
+  @Override
+  public String password() {
+    return password;
+  }
+
+  @Override
   public void close() {
     if (closed.compareAndSet(false, true)) {
       stopQuietly(server);
-      delete(dir);
+      Path temporary = dir;
+      if (temporary != null) {
+        delete(temporary);
+      }
       if (LIVE.decrementAndGet() == 0) {
         // In-VM connections share one static pool of non-daemon threads; with no embedded broker
         // left there is no in-VM connection either, and the pool would keep the JVM alive.

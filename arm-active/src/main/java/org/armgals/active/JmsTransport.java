@@ -22,10 +22,19 @@ import org.jspecify.annotations.Nullable;
  * one message. A message that fails to decode, names a type not allowed, is oversized or lacks its
  * properties is logged, counted in {@link TransportStats#rejected()} and dropped.
  *
- * <p>Threading: every method may be called from any thread. Sends are asynchronous: an event is
- * encoded on the caller's thread (so a type not allowed fails there) and handed to the broker by
- * the transport's sender thread; a refusal at the receiving runtime (stopped object, full buffer)
- * is counted there, not thrown to the sender.
+ * <p>Delivery ({@link Guarantee}, chosen per topic and per type): at most once by default, the
+ * fastest; at least once with duplicates suppressed where the builder says so. On every route (what
+ * one transport sends to one runtime on one topic with one guarantee) messages carry sequence
+ * numbers, keep their order, and what never arrives is counted in {@link TransportStats#lost()} and
+ * told to the receiving runtime's {@link org.armgals.active.spi.ErrorHandler#onLost} when the next
+ * message of the route arrives. Every message that reaches a transport is counted once, in one of
+ * {@link TransportStats}'s inbound figures.
+ *
+ * <p>Threading: every method may be called from any thread, and none waits for the broker: an event
+ * is encoded on the caller's thread (so a type not allowed fails there) and queued to the
+ * transport's sender threads; a full queue applies {@link Builder#outboundQueue}'s policy. A
+ * refusal at the receiving runtime (stopped object, full buffer) is counted there, not thrown to
+ * the sender.
  */
 public interface JmsTransport extends Transport {
 
@@ -54,6 +63,29 @@ public interface JmsTransport extends Transport {
     }
   }
 
+  /**
+   * How the messages of a type or a topic travel (see {@link Builder#guarantee(Topic, Guarantee)}).
+   * Either way a route keeps its order and counts what it loses; two routes of different guarantees
+   * to the same runtime are not ordered with each other.
+   */
+  enum Guarantee {
+    /**
+     * Non-persistent messages, sent once, to subscriptions that live as long as their runtime: a
+     * broker restart or a send the broker refuses loses them, and the receiver counts the loss. The
+     * default, and the fastest.
+     */
+    AT_MOST_ONCE,
+    /**
+     * Persistent messages, each with Artemis's duplicate-detection id, sent again until the broker
+     * has confirmed them, to a shared durable subscription per receiving runtime and topic that
+     * outlives its consumer; a message delivered twice is dropped by the receiver and counted in
+     * {@link TransportStats#duplicates()}. Nothing is lost across a broker restart when the broker
+     * keeps a journal (a standalone broker with persistence on): 0 lost, 0 delivered twice. The
+     * receiver acknowledges a message once it is in the destination object's buffer.
+     */
+    AT_LEAST_ONCE
+  }
+
   /** A builder with the defaults: an embedded broker, prefix {@code armgals}. */
   static Builder builder() {
     return new Builder();
@@ -65,6 +97,9 @@ public interface JmsTransport extends Transport {
   /** The URL the transport connected to. */
   String brokerUrl();
 
+  /** The embedded broker this transport started and owns, with its netty URL and login, if any. */
+  java.util.Optional<EmbeddedBroker> embeddedBroker();
+
   /**
    * Registers {@code address} under {@code name} in the name service: {@link #lookup} on any
    * transport on the same broker (and prefix) finds it while this transport is open.
@@ -72,6 +107,17 @@ public interface JmsTransport extends Transport {
    * @throws IllegalArgumentException {@code name} is blank
    */
   void register(String name, Address address);
+
+  /**
+   * Fails at once, with an {@link ActiveException} naming {@code runtime} and {@code why}, every
+   * request this transport sent to an object of {@code runtime} whose answer has not come: that
+   * runtime was declared lost (a killed JVM) or left. Requests sent later wait for their answer as
+   * usual. arm-presence's {@code Presence.Builder.failRequestsOf} calls it for every runtime its
+   * presence declares lost or gone.
+   *
+   * @return how many requests failed
+   */
+  int failRequestsTo(String runtime, String why);
 
   /** Removes a registration of this transport. Idempotent. */
   void unregister(String name);
@@ -125,6 +171,10 @@ public interface JmsTransport extends Transport {
     int maxMessageBytes = 1 << 20;
     Duration replyTimeout = Duration.ofSeconds(30);
     TimeSource timeSource = TimeSource.system();
+    final Map<Topic, Guarantee> topicGuarantees = new LinkedHashMap<>();
+    final Map<Class<?>, Guarantee> typeGuarantees = new LinkedHashMap<>();
+    int outboundCapacity = 16_384;
+    OverflowPolicy outboundPolicy = OverflowPolicy.block(ObjectConfig.DEFAULT_BLOCK_TIMEOUT);
 
     Builder() {}
 
@@ -137,7 +187,8 @@ public interface JmsTransport extends Transport {
 
     /**
      * Starts and owns an embedded broker that other JVMs of this host reach on {@code
-     * tcp://127.0.0.1:<port>}.
+     * tcp://127.0.0.1:<port>} with the login it generates for this run ({@link #embeddedBroker()}
+     * tells it to whoever starts those JVMs).
      */
     public Builder embeddedBroker(int port) {
       if (port < 1 || port > 65_535) {
@@ -150,7 +201,8 @@ public interface JmsTransport extends Transport {
 
     /**
      * Connects to a broker by URL ({@code tcp://host:61616}, {@code vm://0}, {@link
-     * EmbeddedBroker#inVmUrl()}) without credentials.
+     * EmbeddedBroker#inVmUrl()}) without credentials: an in-VM broker of this JVM, or a broker
+     * whose acceptor takes anyone (none that armgals starts).
      */
     public Builder broker(String url) {
       requireNonNull(url, "url");
@@ -268,6 +320,65 @@ public interface JmsTransport extends Transport {
       return this;
     }
 
+    /**
+     * The guarantee of every event and request type that travels on {@code topic} (ENTITY, SMETA or
+     * BMETA), unless {@link #guarantee(Guarantee, Class[])} says otherwise for its type. Default
+     * {@link Guarantee#AT_MOST_ONCE}.
+     *
+     * @throws IllegalArgumentException {@code topic} is FUTURE or NAMES (an answer travels as its
+     *     request does; look-ups at most once)
+     */
+    public Builder guarantee(Topic topic, Guarantee guarantee) {
+      requireNonNull(topic, "topic");
+      requireNonNull(guarantee, "guarantee");
+      if (topic == Topic.FUTURE || topic == Topic.NAMES) {
+        throw new IllegalArgumentException(
+            "a guarantee is chosen for ENTITY, SMETA or BMETA, not " + topic);
+      }
+      topicGuarantees.put(topic, guarantee);
+      return this;
+    }
+
+    /**
+     * The guarantee of the event and request types {@code types} (each must be on the allow-list by
+     * {@link #build()}), whatever their topic's; a request's answer travels with the request's
+     * guarantee. Published events travel at most once.
+     */
+    public Builder guarantee(Guarantee guarantee, Class<?>... types) {
+      requireNonNull(guarantee, "guarantee");
+      for (Class<?> t : types) {
+        requireNonNull(t, "type");
+        if (!Event.class.isAssignableFrom(t)) {
+          throw new IllegalArgumentException(
+              "a guarantee is chosen for event and request types, not " + t.getName());
+        }
+        typeGuarantees.put(t, guarantee);
+      }
+      return this;
+    }
+
+    /**
+     * The bound of the outbound queue, where sends wait for the broker, and what a send finds when
+     * it is full: the policies of an object's buffer ({@link OverflowPolicy}), applied on the
+     * caller's thread. {@link OverflowPolicy#block} waits for room only while the connection is up
+     * (a sender faster than the broker is paced by it) and refuses at once with {@link
+     * BufferFullException} while it is down: no call waits for a broker that is away. A dropped
+     * event or answer is counted in {@link TransportStats#unsent()}; a dropped request fails its
+     * future at once; an at-least-once message is never dropped (a drop policy refuses it). Default
+     * 16,384 messages and {@code block(}{@link ObjectConfig#DEFAULT_BLOCK_TIMEOUT}{@code )}, as an
+     * asynchronous object's buffer.
+     */
+    public Builder outboundQueue(int capacity, OverflowPolicy policy) {
+      requireNonNull(policy, "policy");
+      if (capacity < 16 || capacity > 1 << 24) {
+        throw new IllegalArgumentException(
+            "outbound queue capacity must be in [16, 16777216], was " + capacity);
+      }
+      this.outboundCapacity = capacity;
+      this.outboundPolicy = policy;
+      return this;
+    }
+
     /** Where the reply timeout reads time; default {@link TimeSource#system()}. */
     public Builder timeSource(TimeSource timeSource) {
       this.timeSource = requireNonNull(timeSource, "timeSource");
@@ -277,11 +388,18 @@ public interface JmsTransport extends Transport {
     /**
      * A connected transport.
      *
-     * @throws IllegalArgumentException a type of the allow-list cannot be encoded (the message
-     *     names it)
-     * @throws IllegalStateException the broker could not be started or reached; the cause says why
+     * @throws IllegalArgumentException a type of the allow-list cannot be encoded, or a type given
+     *     a guarantee is not on it (the message names it)
+     * @throws IllegalStateException the broker could not be started or reached, or refused the
+     *     login (the message says which); the cause says why
      */
     public JmsTransport build() {
+      for (Class<?> t : typeGuarantees.keySet()) {
+        if (!allowed.contains(t)) {
+          throw new IllegalArgumentException(
+              t.getName() + " was given a guarantee but is not on the allow-list; allow it too");
+        }
+      }
       return JmsTransportImpl.connect(this);
     }
   }

@@ -5,18 +5,20 @@ import static java.util.Objects.requireNonNull;
 import jakarta.jms.BytesMessage;
 import jakarta.jms.Connection;
 import jakarta.jms.JMSException;
+import jakarta.jms.JMSSecurityException;
 import jakarta.jms.Message;
 import jakarta.jms.MessageConsumer;
 import jakarta.jms.MessageProducer;
 import jakarta.jms.Session;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
-import java.util.concurrent.ArrayBlockingQueue;
-import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletionException;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executors;
@@ -25,7 +27,9 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.LongAdder;
+import org.apache.activemq.artemis.api.core.client.FailoverEventType;
 import org.apache.activemq.artemis.api.jms.ActiveMQJMSConstants;
+import org.apache.activemq.artemis.jms.client.ActiveMQConnection;
 import org.apache.activemq.artemis.jms.client.ActiveMQConnectionFactory;
 import org.armgals.active.JmsTransport.Topic;
 import org.jspecify.annotations.Nullable;
@@ -34,42 +38,55 @@ import org.slf4j.LoggerFactory;
 
 /**
  * {@link JmsTransport} on Artemis's Jakarta client. One connection; a sender thread that owns the
- * producing session and batches; per attached runtime a consuming session whose listeners (one at a
- * time, on Artemis's threads) decode and deliver; a session whose synchronous consumer of answers
- * the threads waiting for them share ({@link AnswerReceiver}); one session for look-ups.
+ * producing session ({@link JmsSender}); per attached runtime a consuming session whose listeners
+ * (one at a time, on Artemis's threads) decode, check the route and deliver, and, for the topics
+ * that carry at-least-once types, a session of shared durable subscriptions in their stead; a
+ * session whose synchronous consumer of answers the threads waiting for them share ({@link
+ * AnswerReceiver}); one session for look-ups.
  */
 final class JmsTransportImpl implements JmsTransport {
   private static final Logger LOG = LoggerFactory.getLogger(JmsTransportImpl.class);
 
   /**
-   * How the transport's own sessions consume (answers, look-ups, the events and requests of the
-   * attached runtimes): pre-acknowledged, Artemis's mode in which the broker acknowledges a message
-   * as it delivers it and the client sends no acknowledgement back (decision 0034). The messages
-   * are non-persistent on subscriptions that live as long as their consumer, so an acknowledgement
-   * buys nothing; sent, it would go ahead of the answer on the connection.
+   * How the transport's own sessions consume (answers, look-ups, the at-most-once events and
+   * requests of the attached runtimes): pre-acknowledged, Artemis's mode in which the broker
+   * acknowledges a message as it delivers it and the client sends no acknowledgement back (decision
+   * 0034). The messages are non-persistent on subscriptions that live as long as their consumer, so
+   * an acknowledgement buys nothing; sent, it would go ahead of the answer on the connection.
+   * At-least-once subscriptions acknowledge each message once it is delivered (decision 0042).
    */
   private static final int CONSUMING = ActiveMQJMSConstants.PRE_ACKNOWLEDGE;
 
-  private static final int QUEUE = 16_384;
-  private static final int LOGGED_REJECTIONS = 20;
+  private static final Duration STOP_WAIT = Duration.ofSeconds(10);
+
+  /** The most events a message may carry: the largest {@link Builder#maxBatch}. */
+  private static final int MAX_BATCH = 4096;
+
+  /** The sessions of one attached runtime and the ledger of its inbound routes. */
+  private record Attached(Session session, @Nullable Session durable, RouteLedger ledger) {}
 
   private final @Nullable EmbeddedBroker ownBroker;
   private final String url;
   private final String prefix;
   private final WireCodec codec;
   private final Map<Class<?>, Topic> topics;
+  private final Map<Class<?>, Boolean> reliableTypes;
+  private final Set<Topic> reliableTopics;
   private final boolean jmsEverywhere;
   private final String node = UUID.randomUUID().toString();
   private final ActiveMQConnectionFactory factory;
   private final Connection connection;
   private final AnswerReceiver answers;
-  private final Map<String, Session> runtimes = new ConcurrentHashMap<>();
+  private final @Nullable String answerSubscription;
+  private final Session answerSession;
+  private final MessageConsumer answerConsumer;
+  private final RouteLedger answerRoutes = new RouteLedger();
+  private final Map<String, Attached> runtimes = new ConcurrentHashMap<>();
   private final Map<String, Address> names = new ConcurrentHashMap<>();
   private final Set<JmsSubscription> subscriptions = ConcurrentHashMap.newKeySet();
   private final AtomicLong subscriptionIds = new AtomicLong();
   private final PendingAnswers pending;
   private final TimeSource time;
-  private final BlockingQueue<Outbound> outbound = new ArrayBlockingQueue<>(QUEUE);
   private final Thread sender;
   private final JmsSender sending;
   private final ScheduledExecutorService sweeper;
@@ -78,7 +95,18 @@ final class JmsTransportImpl implements JmsTransport {
   private final LongAdder received = new LongAdder();
   private final LongAdder batches = new LongAdder();
   private final LongAdder rejected = new LongAdder();
+  private final LongAdder lost = new LongAdder();
+  private final LongAdder duplicates = new LongAdder();
+  private final LongAdder unmatched = new LongAdder();
+  private final LongAdder unsent = new LongAdder();
+  private final LogLimiter rejections = new LogLimiter();
+  private final LogLimiter refusals = new LogLimiter();
+  private final LogLimiter gaps = new LogLimiter();
+  private final LogLimiter strays = new LogLimiter();
+  private final LogLimiter lostAnswers = new LogLimiter();
+  private final LogLimiter outages = new LogLimiter();
   private final AtomicBoolean closed = new AtomicBoolean();
+  private volatile boolean connected = true;
 
   private JmsTransportImpl(JmsTransport.Builder b, @Nullable EmbeddedBroker ownBroker, String url)
       throws JMSException {
@@ -87,6 +115,22 @@ final class JmsTransportImpl implements JmsTransport {
     this.prefix = b.prefix;
     this.codec = new WireCodec(b.allowed, b.maxMessageBytes);
     this.topics = new HashMap<>(b.topics);
+    this.reliableTypes = new HashMap<>();
+    Set<Topic> durable = EnumSet.noneOf(Topic.class);
+    for (Class<?> t : b.allowed) {
+      if (!Event.class.isAssignableFrom(t)) {
+        continue;
+      }
+      Topic topic = b.topics.getOrDefault(t, Topic.ENTITY);
+      Guarantee g =
+          b.typeGuarantees.getOrDefault(
+              t, b.topicGuarantees.getOrDefault(topic, Guarantee.AT_MOST_ONCE));
+      if (g == Guarantee.AT_LEAST_ONCE) {
+        reliableTypes.put(t, true);
+        durable.add(topic);
+      }
+    }
+    this.reliableTopics = durable;
     this.jmsEverywhere = b.jmsEverywhere;
     this.time = b.timeSource;
     this.pending = new PendingAnswers(b.timeSource, b.replyTimeout);
@@ -94,37 +138,52 @@ final class JmsTransportImpl implements JmsTransport {
     this.connection =
         b.user != null ? factory.createConnection(b.user, b.password) : factory.createConnection();
     connection.setExceptionListener(
-        e -> LOG.warn("JMS transport {}: connection to {} failed; reconnecting", node, url, e));
-    Session answerSession = connection.createSession(false, CONSUMING);
+        e -> {
+          if (outages.tick() > 0) {
+            LOG.warn("JMS transport {}: connection to {} failed; reconnecting", node, url, e);
+          }
+        });
+    ((ActiveMQConnection) connection).setFailoverListener(this::onFailover);
+    this.answerSession = connection.createSession(false, CONSUMING);
+    String answersFor = WireProperties.NODE + " = " + WireProperties.literal(node);
+    jakarta.jms.Topic future = answerSession.createTopic(topicName(Topic.FUTURE));
+    if (reliableTypes.isEmpty()) {
+      this.answerSubscription = null;
+      this.answerConsumer = answerSession.createConsumer(future, answersFor);
+    } else {
+      this.answerSubscription = prefix + ":answers:" + node;
+      this.answerConsumer =
+          answerSession.createSharedDurableConsumer(future, answerSubscription, answersFor);
+    }
     this.answers =
         new AnswerReceiver(
-            answerSession.createConsumer(
-                answerSession.createTopic(topicName(Topic.FUTURE)),
-                WireProperties.NODE + " = " + WireProperties.literal(node)),
+            answerConsumer,
             this::onAnswer,
             pending::size,
+            () -> connected,
             time,
             node.substring(0, 8));
     Session lookupSession = connection.createSession(false, CONSUMING);
     MessageConsumer lookups =
         lookupSession.createConsumer(lookupSession.createTopic(topicName(Topic.NAMES)));
     lookups.setMessageListener(this::onLookup);
-    Session producing = connection.createSession(false, Session.AUTO_ACKNOWLEDGE);
-    MessageProducer producer = producing.createProducer(null);
-    producer.setDeliveryMode(jakarta.jms.DeliveryMode.NON_PERSISTENT);
-    producer.setDisableMessageID(true);
-    producer.setDisableMessageTimestamp(true);
-    this.sending =
-        new JmsSender(
-            outbound,
-            producing,
-            producer,
-            this::topicName,
+    JmsSender.Context context =
+        new JmsSender.Context(
+            node,
+            b.outboundCapacity,
+            b.outboundPolicy,
             b.maxBatch,
             b.maxMessageBytes,
             sent,
             batches,
-            node);
+            unsent,
+            () -> connected,
+            this::droppedUnsent);
+    Session producing = connection.createSession(false, Session.AUTO_ACKNOWLEDGE);
+    MessageProducer producer = producing.createProducer(null);
+    producer.setDisableMessageID(true);
+    producer.setDisableMessageTimestamp(true);
+    this.sending = new JmsSender(context, producing, producer, this::topicName);
     this.sender =
         Thread.ofPlatform()
             .name("armgals-jms-sender-" + node.substring(0, 8))
@@ -157,6 +216,17 @@ final class JmsTransportImpl implements JmsTransport {
     String url = withOptions(base, b.options);
     try {
       return new JmsTransportImpl(b, own, url);
+    } catch (JMSSecurityException e) {
+      throw new IllegalStateException(
+          "broker "
+              + base
+              + " refused the login of the JMS transport ("
+              + (b.user == null
+                  ? "no user given; use JmsTransport.builder().broker(url, user, password)"
+                  : "user '" + b.user + "' and its password")
+              + "): "
+              + e.getMessage(),
+          e);
     } catch (JMSException | RuntimeException e) {
       if (own != null) {
         own.close();
@@ -182,6 +252,18 @@ final class JmsTransportImpl implements JmsTransport {
     return s.toString();
   }
 
+  private void onFailover(FailoverEventType event) {
+    switch (event) {
+      case FAILURE_DETECTED -> connected = false;
+      case FAILOVER_COMPLETED -> {
+        connected = true;
+        sending.reconnected();
+        LOG.info("JMS transport {}: reconnected to {}", node, url);
+      }
+      case FAILOVER_FAILED -> LOG.error("JMS transport {}: reconnection to {} failed", node, url);
+    }
+  }
+
   // ------------------------------------------------------------------ Transport
 
   @Override
@@ -189,33 +271,68 @@ final class JmsTransportImpl implements JmsTransport {
     requireNonNull(runtime, "runtime");
     requireNonNull(inbound, "inbound");
     checkOpen();
+    Session session = null;
+    Session durable = null;
     try {
-      Session session = connection.createSession(false, CONSUMING);
-      if (runtimes.putIfAbsent(runtime, session) != null) {
+      session = connection.createSession(false, CONSUMING);
+      durable =
+          reliableTopics.isEmpty()
+              ? null
+              : connection.createSession(false, Session.AUTO_ACKNOWLEDGE);
+      Attached attached = new Attached(session, durable, new RouteLedger());
+      if (runtimes.putIfAbsent(runtime, attached) != null) {
         session.close();
+        if (durable != null) {
+          durable.close();
+        }
         throw new IllegalStateException("a runtime named '" + runtime + "' is already attached");
       }
-      String selector = WireProperties.TO + " = " + WireProperties.literal(runtime);
+      String to = WireProperties.TO + " = " + WireProperties.literal(runtime);
       for (Topic t : List.of(Topic.ENTITY, Topic.SMETA, Topic.BMETA)) {
-        MessageConsumer c = session.createConsumer(session.createTopic(topicName(t)), selector);
-        c.setMessageListener(m -> onInbound(runtime, inbound, m));
+        // A topic with at-least-once types is taken whole from a durable subscription, so that
+        // its routes keep their order whatever each message's guarantee.
+        MessageConsumer c =
+            durable != null && reliableTopics.contains(t)
+                ? durable.createSharedDurableConsumer(
+                    durable.createTopic(topicName(t)), prefix + ":" + runtime + ":" + t.name(), to)
+                : session.createConsumer(session.createTopic(topicName(t)), to);
+        c.setMessageListener(m -> onInbound(runtime, inbound, attached, t, m));
       }
     } catch (JMSException e) {
       runtimes.remove(runtime);
+      closeQuietly(session);
+      closeQuietly(durable);
       throw new IllegalStateException("cannot subscribe runtime " + runtime + " on " + url, e);
     }
   }
 
-  @Override
-  public void detach(String runtime) {
-    Session s = runtimes.remove(requireNonNull(runtime, "runtime"));
+  private void closeQuietly(@Nullable Session s) {
     if (s != null) {
       try {
         s.close();
       } catch (JMSException e) {
-        LOG.warn("JMS transport {}: closing the session of runtime {} failed", node, runtime, e);
+        LOG.warn("JMS transport {}: closing a session failed", node, e);
       }
     }
+  }
+
+  /**
+   * {@inheritDoc}
+   *
+   * <p>The durable subscriptions of its at-least-once topics stay on the broker, so that what is
+   * sent to the runtime while it is away waits for it.
+   */
+  @Override
+  public void detach(String runtime) {
+    Attached a = runtimes.remove(requireNonNull(runtime, "runtime"));
+    if (a != null) {
+      closeQuietly(a.session());
+      closeQuietly(a.durable());
+    }
+  }
+
+  private boolean reliable(Class<?> type) {
+    return reliableTypes.containsKey(type);
   }
 
   @Override
@@ -226,9 +343,16 @@ final class JmsTransportImpl implements JmsTransport {
     props.put(WireProperties.MSG, WireProperties.MSG_EVENT);
     props.put(WireProperties.TO, destination.runtime());
     Topic topic = topics.getOrDefault(event.getClass(), Topic.ENTITY);
+    boolean rel = reliable(event.getClass());
     enqueue(
         new Outbound(
-            topic, Outbound.route(topic, destination.runtime()), true, encode(event), props));
+            topic,
+            Outbound.route(topic, destination.runtime()),
+            true,
+            encode(event),
+            props,
+            rel,
+            0));
   }
 
   @Override
@@ -239,14 +363,46 @@ final class JmsTransportImpl implements JmsTransport {
     Map<String, Object> props = selectorProperties(request);
     byte[] value = encode(request);
     ValueFuture<Object> future = ValueFuture.remote(destination.toString(), time, answers);
-    long corr = pending.open(future, destination.toString());
+    long corr = pending.open(future, destination.toString(), destination.runtime());
     props.put(WireProperties.MSG, WireProperties.MSG_REQUEST);
     props.put(WireProperties.TO, destination.runtime());
     props.put(WireProperties.NODE, node);
     props.put(WireProperties.CORR, corr);
     Topic topic = topics.getOrDefault(request.getClass(), Topic.ENTITY);
-    enqueue(new Outbound(topic, Outbound.route(topic, destination.runtime()), false, value, props));
+    boolean rel = reliable(request.getClass());
+    try {
+      enqueue(
+          new Outbound(
+              topic, Outbound.route(topic, destination.runtime()), false, value, props, rel, corr));
+    } catch (RuntimeException refused) {
+      pending.take(corr);
+      throw refused;
+    }
     return (FutureValue<R>) future;
+  }
+
+  @Override
+  public int failRequestsTo(String runtime, String why) {
+    requireNonNull(runtime, "runtime");
+    requireNonNull(why, "why");
+    return pending.failRuntime(
+        runtime,
+        new ActiveException(
+            "runtime '" + runtime + "' " + why + " before answering (JMS transport " + node + ")"));
+  }
+
+  /** A message the outbound queue dropped: a request's future fails at once. */
+  private void droppedUnsent(Outbound o) {
+    if (o.corr() != 0) {
+      ValueFuture<Object> f = pending.take(o.corr());
+      if (f != null) {
+        f.abandon(
+            new BufferFullException(
+                "the request was dropped unsent: the outbound queue of JMS transport "
+                    + node
+                    + " is full"));
+      }
+    }
   }
 
   @Override
@@ -256,7 +412,15 @@ final class JmsTransportImpl implements JmsTransport {
 
   @Override
   public TransportStats stats() {
-    return new TransportStats(sent.sum(), received.sum(), batches.sum(), rejected.sum());
+    return new TransportStats(
+        sent.sum(),
+        received.sum(),
+        batches.sum(),
+        rejected.sum(),
+        lost.sum(),
+        duplicates.sum(),
+        unmatched.sum(),
+        unsent.sum());
   }
 
   // ------------------------------------------------------------------ publish and subscribe
@@ -306,6 +470,11 @@ final class JmsTransportImpl implements JmsTransport {
 
   String node() {
     return node;
+  }
+
+  /** Whether the connection is up, as Artemis's failover events last said. */
+  boolean connected() {
+    return connected;
   }
 
   Connection connection() {
@@ -367,6 +536,11 @@ final class JmsTransportImpl implements JmsTransport {
   }
 
   @Override
+  public java.util.Optional<EmbeddedBroker> embeddedBroker() {
+    return java.util.Optional.ofNullable(ownBroker);
+  }
+
+  @Override
   public void register(String name, Address address) {
     requireNonNull(name, "name");
     requireNonNull(address, "address");
@@ -391,7 +565,7 @@ final class JmsTransportImpl implements JmsTransport {
     }
     String service = "the name service (name '" + name + "')";
     ValueFuture<Object> future = ValueFuture.remote(service, time, answers);
-    long corr = pending.open(future, service);
+    long corr = pending.open(future, service, null);
     Map<String, Object> props = new HashMap<>();
     props.put(WireProperties.MSG, WireProperties.MSG_LOOKUP);
     props.put(WireProperties.NAME, name);
@@ -457,15 +631,35 @@ final class JmsTransportImpl implements JmsTransport {
 
   // ------------------------------------------------------------------ receiving
 
-  /** An event, a batch or a request for the runtime {@code runtime}. */
-  private void onInbound(String runtime, Inbound inbound, Message m) {
+  /**
+   * An event, a batch or a request for the runtime {@code runtime}, on {@code topic}. Its place on
+   * its route is taken first (a message that arrived counts as arrived, whatever its body), then it
+   * is checked whole before anything is delivered, so that each message lands in one count: its
+   * events received (or refused by their object), or the message rejected, or its events
+   * duplicates.
+   */
+  private void onInbound(
+      String runtime, Inbound inbound, Attached attached, Topic topic, Message m) {
     try {
+      int count = m.propertyExists(WireProperties.COUNT) ? requiredInt(m, WireProperties.COUNT) : 1;
+      int skip = route(attached.ledger(), inbound, topic, m, count);
+      if (skip == count) {
+        return;
+      }
       String kind = required(m, WireProperties.MSG);
       List<@Nullable Object> values = decode(m);
       switch (kind) {
         case WireProperties.MSG_EVENT, WireProperties.MSG_BATCH -> {
+          if (values.size() != count) {
+            throw new WireFormatException(
+                "a message of " + count + " event(s) holds " + values.size() + " value(s)");
+          }
+          List<Event> events = new ArrayList<>(values.size());
           for (Object v : values) {
-            deliver(runtime, inbound, v);
+            events.add(event(runtime, v));
+          }
+          for (int i = skip; i < events.size(); i++) {
+            deliver(runtime, inbound, events.get(i));
           }
         }
         case WireProperties.MSG_REQUEST -> {
@@ -474,7 +668,14 @@ final class JmsTransportImpl implements JmsTransport {
           if (values.size() != 1 || !(values.get(0) instanceof Request<?> r)) {
             throw new WireFormatException("a request message must hold one Request: " + values);
           }
-          ask(runtime, inbound, r, replyTo, corr);
+          ask(
+              runtime,
+              inbound,
+              event(runtime, r),
+              r,
+              replyTo,
+              corr,
+              m.propertyExists(WireProperties.ALO));
         }
         default ->
             throw new WireFormatException("unknown " + WireProperties.MSG + " '" + kind + "'");
@@ -484,26 +685,85 @@ final class JmsTransportImpl implements JmsTransport {
     }
   }
 
-  private void deliver(String runtime, Inbound inbound, @Nullable Object v)
-      throws WireFormatException {
-    Event e = event(runtime, v);
+  /**
+   * Takes a message's place on its route (sender, topic, guarantee): counts and tells the gap
+   * before it, counts the events of it taken already, and returns how many to skip.
+   *
+   * @param inbound the runtime to tell of a gap; null: answers to this transport
+   */
+  private int route(
+      RouteLedger ledger, @Nullable Inbound inbound, Topic topic, Message m, int count)
+      throws JMSException, WireFormatException {
+    String from = required(m, WireProperties.FROM);
+    long first = requiredLong(m, WireProperties.RSEQ);
+    if (first < 1 || count < 1 || count > MAX_BATCH) {
+      throw new WireFormatException(
+          WireProperties.RSEQ
+              + " must be >= 1 and "
+              + WireProperties.COUNT
+              + " in [1, "
+              + MAX_BATCH
+              + "], were "
+              + first
+              + " and "
+              + count);
+    }
+    String route = from + "|" + topic.path();
+    RouteLedger.Verdict v = ledger.take(route, first, count);
+    if (v.lost() > 0) {
+      lost.add(v.lost());
+      long n = gaps.tick();
+      if (n > 0) {
+        LOG.warn(
+            "JMS transport {}: {} message(s) of route {} never arrived (gaps so far: {})",
+            node,
+            v.lost(),
+            route,
+            n);
+      }
+      if (inbound != null) {
+        inbound.lost(route, v.lost());
+      }
+    }
+    if (v.skip() > 0) {
+      duplicates.add(v.skip());
+    }
+    return v.skip();
+  }
+
+  private void deliver(String runtime, Inbound inbound, Event e) {
     try {
       inbound.deliver(e.destination(), e);
       received.increment();
     } catch (ActiveException refused) {
       rejected.increment();
-      LOG.warn("JMS transport {}: runtime {} refused {}: {}", node, runtime, e, refused.toString());
+      long n = refusals.tick();
+      if (n > 0) {
+        LOG.warn(
+            "JMS transport {}: runtime {} refused {} ({} refused so far): {}",
+            node,
+            runtime,
+            e,
+            n,
+            refused.toString());
+      }
     }
   }
 
-  private void ask(String runtime, Inbound inbound, Request<?> r, String replyTo, long corr)
-      throws WireFormatException {
-    Event e = event(runtime, r);
+  private void ask(
+      String runtime,
+      Inbound inbound,
+      Event e,
+      Request<?> r,
+      String replyTo,
+      long corr,
+      boolean reliable) {
     received.increment();
     try {
-      inbound.ask(e.destination(), r, (value, failure) -> answer(replyTo, corr, value, failure));
+      inbound.ask(
+          e.destination(), r, (value, failure) -> answer(replyTo, corr, value, failure, reliable));
     } catch (ActiveException | UnsupportedOperationException refused) {
-      answer(replyTo, corr, null, refused);
+      answer(replyTo, corr, null, refused, reliable);
     }
   }
 
@@ -529,24 +789,42 @@ final class JmsTransportImpl implements JmsTransport {
   }
 
   /**
-   * Sends the answer of a request (or look-up) back to the node that waits for it. Never throws: it
-   * runs on the thread that completed the request, an object's worker among them; an answer that
-   * cannot be sent is logged, and its future fails at its reply timeout.
+   * Sends the answer of a request (or look-up) back to the node that waits for it, with the
+   * request's guarantee. Never throws: it runs on the thread that completed the request, an
+   * object's worker among them; an answer that cannot be sent is logged, and its future fails at
+   * its reply timeout.
    */
-  private void answer(String node, long corr, @Nullable Object value, @Nullable Throwable failure) {
+  private void answer(
+      String node,
+      long corr,
+      @Nullable Object value,
+      @Nullable Throwable failure,
+      boolean reliable) {
     if (closed.get()) {
       return;
     }
     try {
-      enqueue(answerMessage(node, corr, value, failure));
+      enqueue(answerMessage(node, corr, value, failure, reliable));
     } catch (RuntimeException e) {
-      LOG.warn(
-          "JMS transport {}: the answer to request {} of {} is lost", this.node, corr, node, e);
+      long n = lostAnswers.tick();
+      if (n > 0) {
+        LOG.warn(
+            "JMS transport {}: the answer to request {} of {} is lost ({} so far)",
+            this.node,
+            corr,
+            node,
+            n,
+            e);
+      }
     }
   }
 
   private Outbound answerMessage(
-      String node, long corr, @Nullable Object value, @Nullable Throwable failure) {
+      String node,
+      long corr,
+      @Nullable Object value,
+      @Nullable Throwable failure,
+      boolean reliable) {
     Map<String, Object> props = new HashMap<>();
     props.put(WireProperties.NODE, node);
     props.put(WireProperties.CORR, corr);
@@ -574,29 +852,50 @@ final class JmsTransportImpl implements JmsTransport {
       props.put(WireProperties.MSG, WireProperties.MSG_FAILURE);
       props.put(WireProperties.ERROR, text.length() > 1_000 ? text.substring(0, 1_000) : text);
     }
-    return new Outbound(Topic.FUTURE, null, false, body, props);
+    return new Outbound(
+        Topic.FUTURE, Outbound.route(Topic.FUTURE, node), false, body, props, reliable, 0);
   }
 
-  /** An answer to one of this transport's requests or look-ups. */
+  /**
+   * An answer to one of this transport's requests or look-ups, checked whole first; one that no
+   * request waits for (late, repeated, or of a number never given) is counted unmatched.
+   */
   private void onAnswer(Message m) {
     try {
+      if (route(answerRoutes, null, Topic.FUTURE, m, 1) > 0) {
+        return;
+      }
       String kind = required(m, WireProperties.MSG);
       long corr = requiredLong(m, WireProperties.CORR);
+      String error =
+          switch (kind) {
+            case WireProperties.MSG_ANSWER -> null;
+            case WireProperties.MSG_FAILURE -> required(m, WireProperties.ERROR);
+            default -> throw new WireFormatException("unknown answer kind '" + kind + "'");
+          };
       List<@Nullable Object> values = decode(m);
       if (values.size() != 1) {
         throw new WireFormatException("an answer must hold one value, not " + values.size());
       }
       ValueFuture<Object> f = pending.take(corr);
       if (f == null) {
-        LOG.debug("JMS transport {}: late or duplicate answer {}", node, corr);
+        unmatched.increment();
+        long n = strays.tick();
+        if (n > 0) {
+          LOG.info(
+              "JMS transport {}: an answer nobody waits for (number {}; late, repeated or unknown;"
+                  + " {} so far)",
+              node,
+              corr,
+              n);
+        }
         return;
       }
       received.increment();
-      switch (kind) {
-        case WireProperties.MSG_ANSWER -> f.complete(values.get(0));
-        case WireProperties.MSG_FAILURE ->
-            f.fail(new ActiveException("failed remotely: " + required(m, WireProperties.ERROR)));
-        default -> throw new WireFormatException("unknown answer kind '" + kind + "'");
+      if (error == null) {
+        f.complete(values.get(0));
+      } else {
+        f.fail(new ActiveException("failed remotely: " + error));
       }
     } catch (WireFormatException | JMSException | RuntimeException e) {
       reject(m, e);
@@ -613,7 +912,7 @@ final class JmsTransportImpl implements JmsTransport {
       long corr = requiredLong(m, WireProperties.CORR);
       Address a = names.get(required(m, WireProperties.NAME));
       if (a != null && !from.equals(node)) {
-        answer(from, corr, a, null);
+        answer(from, corr, a, null, false);
       }
     } catch (WireFormatException | JMSException | RuntimeException e) {
       reject(m, e);
@@ -643,6 +942,14 @@ final class JmsTransportImpl implements JmsTransport {
     return v.toString();
   }
 
+  private static int requiredInt(Message m, String property)
+      throws JMSException, WireFormatException {
+    if (!(m.getObjectProperty(property) instanceof Integer v)) {
+      throw new WireFormatException("property " + property + " missing or not an int");
+    }
+    return v;
+  }
+
   private static long requiredLong(Message m, String property)
       throws JMSException, WireFormatException {
     if (!(m.getObjectProperty(property) instanceof Long v)) {
@@ -651,11 +958,11 @@ final class JmsTransportImpl implements JmsTransport {
     return v;
   }
 
-  /** Counts and logs a dead letter: every one up to a few, then one in a thousand. */
+  /** Counts and logs a dead letter, at the rate of a {@link LogLimiter}. */
   private void reject(@Nullable Message m, Exception why) {
     rejected.increment();
-    long n = rejected.sum();
-    if (n <= LOGGED_REJECTIONS || n % 1_000 == 0) {
+    long n = rejections.tick();
+    if (n > 0) {
       LOG.error(
           "JMS transport {}: message rejected (dead letters so far: {}): {}",
           node,
@@ -672,8 +979,9 @@ final class JmsTransportImpl implements JmsTransport {
       return;
     }
     try {
-      sending.submit(Outbound.STOP);
-      sender.join(10_000);
+      // While the broker is away a sender may be stuck in a send: wait for it briefly only.
+      Duration wait = connected ? STOP_WAIT : Duration.ofMillis(200);
+      sending.stop(wait);
     } catch (InterruptedException e) {
       Thread.currentThread().interrupt();
     }
@@ -683,6 +991,15 @@ final class JmsTransportImpl implements JmsTransport {
     }
     pending.abandonAll(new ActiveException("JMS transport " + node + " closed before the answer"));
     answers.close();
+    String subscription = answerSubscription;
+    if (subscription != null) {
+      try {
+        answerConsumer.close();
+        answerSession.unsubscribe(subscription);
+      } catch (JMSException e) {
+        LOG.warn("JMS transport {}: removing its subscription to answers failed", node, e);
+      }
+    }
     try {
       connection.close();
     } catch (JMSException e) {

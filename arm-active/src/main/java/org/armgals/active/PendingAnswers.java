@@ -12,7 +12,8 @@ import org.jspecify.annotations.Nullable;
  * answer comes or their time runs out. Thread-safe.
  */
 final class PendingAnswers {
-  private record Pending(ValueFuture<Object> future, String target, long deadline) {}
+  private record Pending(
+      ValueFuture<Object> future, String target, @Nullable String runtime, long deadline) {}
 
   private final ConcurrentHashMap<Long, Pending> pending = new ConcurrentHashMap<>();
   private final AtomicLong next = new AtomicLong();
@@ -24,11 +25,28 @@ final class PendingAnswers {
     this.timeout = timeout;
   }
 
-  /** A new pending future for an answer from {@code target}; its correlation number is returned. */
-  long open(ValueFuture<Object> future, String target) {
+  /**
+   * A new pending future for an answer from {@code target}, an object of {@code runtime} (null: no
+   * runtime in particular, a look-up); its correlation number is returned. The reply timeout counts
+   * from now.
+   */
+  long open(ValueFuture<Object> future, String target, @Nullable String runtime) {
     long corr = next.incrementAndGet();
-    pending.put(corr, new Pending(future, target, time.nanoTime() + timeout.toNanos()));
+    pending.put(corr, new Pending(future, target, runtime, time.nanoTime() + timeout.toNanos()));
     return corr;
+  }
+
+  /** Fails, with {@code cause}, the futures of answers from objects of {@code runtime}. */
+  int failRuntime(String runtime, ActiveException cause) {
+    int n = 0;
+    for (Map.Entry<Long, Pending> e : pending.entrySet()) {
+      Pending p = e.getValue();
+      if (runtime.equals(p.runtime()) && pending.remove(e.getKey(), p)) {
+        p.future().abandon(cause);
+        n++;
+      }
+    }
+    return n;
   }
 
   /** The future waiting for {@code corr}, taken out; null if unknown (late or duplicate answer). */

@@ -168,6 +168,15 @@ final class RuntimeImpl implements ActiveRuntime {
       }
     }
 
+    @Override
+    public void lost(String route, long messages) {
+      try {
+        errorHandler.onLost(name, route, messages);
+      } catch (RuntimeException e) {
+        LOG.error("error handler of runtime {} threw", name, e);
+      }
+    }
+
     private Core<?> target(Address destination) {
       Core<?> core = objects.get(destination.id());
       if (core == null) {
@@ -364,6 +373,16 @@ final class RuntimeImpl implements ActiveRuntime {
     @Override
     public long getTransportRejected() {
       return transportStats().rejected();
+    }
+
+    @Override
+    public long getTransportLost() {
+      return transportStats().lost();
+    }
+
+    @Override
+    public long getTransportUnsent() {
+      return transportStats().unsent();
     }
 
     private TransportStats transportStats() {

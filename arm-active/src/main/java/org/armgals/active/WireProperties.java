@@ -31,8 +31,14 @@ final class WireProperties {
   /** Why a request failed, in a failure answer. */
   static final String ERROR = "arm_error";
 
-  /** The node that published an event. */
+  /** The node (transport) that published an event, or that sent a message of a route. */
   static final String FROM = "arm_from";
+
+  /** The sequence number of a route's message (its first event's, for a batch); from 1. */
+  static final String RSEQ = "arm_rseq";
+
+  /** Present (true) on the messages of at-least-once routes. */
+  static final String ALO = "arm_alo";
 
   /** A subscription's swap marker: the subscription's id. */
   static final String MARKER = "arm_marker";

@@ -35,7 +35,13 @@ class BrokerLifecycleTest {
     try (JmsTransport owner =
             JmsFixture.transport("vm://0").embeddedBroker(port).prefix("threads").build();
         JmsTransport client =
-            JmsFixture.transport("tcp://127.0.0.1:" + port).prefix("threads").build();
+            JmsFixture.transport("vm://0")
+                .broker(
+                    "tcp://127.0.0.1:" + port,
+                    owner.embeddedBroker().orElseThrow().user(),
+                    owner.embeddedBroker().orElseThrow().password())
+                .prefix("threads")
+                .build();
         ActiveRuntime a = JmsFixture.runtime("a", owner);
         ActiveRuntime b = JmsFixture.runtime("b", client)) {
       ActiveObject<Sink> sink = b.spawn(new Sink());
@@ -74,10 +80,13 @@ class BrokerLifecycleTest {
   void afterABrokerRestartSubscriptionsComeBackAndALostAnswerFailsAtItsTimeout() {
     int port = JmsFixture.freePort();
     String url = "tcp://127.0.0.1:" + port;
-    EmbeddedBroker first = EmbeddedBroker.start(port);
+    EmbeddedBroker.Builder broker =
+        EmbeddedBroker.builder().port(port).login("crew", "a-long-secret");
+    EmbeddedBroker first = broker.start();
     EmbeddedBroker second = null;
     JmsTransport.Builder builder =
-        JmsFixture.transport(url)
+        JmsFixture.transport("vm://0")
+            .broker(url, "crew", "a-long-secret")
             .prefix("restart")
             .brokerOption("retryInterval", "50")
             .replyTimeout(Duration.ofSeconds(2));
@@ -98,7 +107,7 @@ class BrokerLifecycleTest {
       FutureValue<Integer> lost =
           a.<RemoteContractTest.Gate>ref(gate.address()).ask(new Sum(null, gate.address(), 1, 1));
       first.close();
-      second = EmbeddedBroker.start(port);
+      second = broker.start();
 
       // events flow again once both transports have reconnected
       long deadline = System.nanoTime() + Duration.ofSeconds(20).toNanos();

@@ -125,7 +125,10 @@ final class Wire {
     }
   }
 
-  /** Allows every kernel event on {@code builder}, each on the topic of decision 0024. */
+  /**
+   * Allows every kernel event on {@code builder}, each on the topic of decision 0024; adaptation
+   * requests and their acknowledgements travel at least once (decision 0042).
+   */
   static JmsTransport.Builder allow(JmsTransport.Builder builder) {
     requireNonNull(builder, "builder");
     for (Class<? extends Event> toMeta :
@@ -141,6 +144,8 @@ final class Wire {
       builder.allow(JmsTransport.Topic.BMETA, toMeta);
     }
     builder.allow(JmsTransport.Topic.SMETA, Modify.class);
+    builder.guarantee(
+        JmsTransport.Guarantee.AT_LEAST_ONCE, AdaptationRequest.class, AdaptationAck.class);
     return builder.allow(
         AdaptationRequest.class,
         ResyncRequest.class,

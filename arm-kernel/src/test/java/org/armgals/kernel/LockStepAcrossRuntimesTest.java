@@ -26,7 +26,6 @@ class LockStepAcrossRuntimesTest extends TwoRuntimesFixture {
     Entity robot =
         baseRobots.newEntity(
             "robot",
-            baseKernel.basicBehavioralMeta(),
             EntityOptions.defaults()
                 .withConfig(ObjectConfig.synchronous(clock))
                 .withNotification(NotificationPolicy.statesOnly())
@@ -106,7 +105,6 @@ class LockStepAcrossRuntimesTest extends TwoRuntimesFixture {
     Entity robot =
         baseRobots.newEntity(
             "robot",
-            baseKernel.basicBehavioralMeta(),
             EntityOptions.defaults()
                 .withConfig(ObjectConfig.synchronous(clock))
                 .withNotification(NotificationPolicy.statesOnly())
@@ -137,7 +135,6 @@ class LockStepAcrossRuntimesTest extends TwoRuntimesFixture {
     Entity robot =
         baseRobots.newEntity(
             "robot",
-            baseKernel.basicBehavioralMeta(),
             EntityOptions.defaults()
                 .withConfig(ObjectConfig.synchronous(clock))
                 .withNotification(NotificationPolicy.statesOnly())
@@ -149,15 +146,12 @@ class LockStepAcrossRuntimesTest extends TwoRuntimesFixture {
   }
 
   /**
-   * Takes the robot's first release (its own meta's attachment), waits for the remote meta's
-   * attachment to arrive, then steps until the meta's model has heard from the robot, at most 9
-   * instants.
+   * Waits for the remote meta's attachment to arrive at the robot (made with no meta of its own, so
+   * that it takes nothing else before), then steps until the meta's model has heard from the robot,
+   * at most 9 instants.
    */
   private static boolean stepUntilKnown(
       ManualClock clock, Entity robot, BehavioralMeta meta, Entity remote) {
-    if (clock.instant() == 0) {
-      clock.step();
-    }
     awaitQueued(robot);
     return clock.stepUntil(() -> meta.model(remote).getValue().lastSeq() > 0, 9);
   }

@@ -6,6 +6,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
+import org.armgals.active.JmsTransport;
 import org.armgals.active.TimeSource;
 import org.armgals.presence.spi.PresenceListener;
 import org.jspecify.annotations.Nullable;
@@ -56,7 +57,10 @@ public interface Presence extends AutoCloseable {
 
     Builder() {}
 
-    /** The broker, without credentials (an embedded or loopback-only broker). */
+    /**
+     * The broker, without credentials: an embedded broker's in-VM acceptor (its network acceptor
+     * requires its login, as any broker reached beyond this JVM should).
+     */
     public Builder broker(String url) {
       this.url = requireNonNull(url, "url");
       this.user = null;
@@ -100,6 +104,25 @@ public interface Presence extends AutoCloseable {
     public Builder timeSource(TimeSource timeSource) {
       this.timeSource = requireNonNull(timeSource, "timeSource");
       return this;
+    }
+
+    /**
+     * Makes the in-flight requests of {@code transport} to a runtime fail as soon as this presence
+     * declares that runtime lost or gone ({@link JmsTransport#failRequestsTo}), rather than at
+     * their reply timeout.
+     */
+    public Builder failRequestsOf(JmsTransport transport) {
+      requireNonNull(transport, "transport");
+      return listener(
+          event -> {
+            switch (event) {
+              case PresenceEvent.Lost lost ->
+                  transport.failRequestsTo(
+                      lost.runtime(), "was declared lost (silent for " + lost.silence() + ")");
+              case PresenceEvent.Left left -> transport.failRequestsTo(left.runtime(), "left");
+              case PresenceEvent.Joined joined -> {}
+            }
+          });
     }
 
     /** Adds a listener. */

@@ -144,8 +144,10 @@ final class ArtemisDistribution {
             "--no-stomp-acceptor",
             "--no-hornetq-acceptor",
             "--no-autotune",
-            "--disable-persistence",
             "--nio"));
+    if (!spec.persistent()) {
+      args.add("--disable-persistence");
+    }
     spec.cluster()
         .ifPresent(
             cluster ->

@@ -27,23 +27,31 @@ final class BrokerExtension implements BeforeAllCallback, AfterAllCallback {
   private final int size;
   private final boolean clustered;
   private final boolean tls;
+  private final boolean persistent;
   private final List<StandaloneBroker> brokers = new ArrayList<>();
 
-  private BrokerExtension(String name, int size, boolean clustered, boolean tls) {
+  private BrokerExtension(
+      String name, int size, boolean clustered, boolean tls, boolean persistent) {
     this.name = name;
     this.size = size;
     this.clustered = clustered;
     this.tls = tls;
+    this.persistent = persistent;
   }
 
-  /** One standalone broker named {@code name}. */
+  /** One standalone broker named {@code name}, persistence off. */
   static BrokerExtension standalone(String name) {
-    return new BrokerExtension(name, 1, false, false);
+    return new BrokerExtension(name, 1, false, false, false);
+  }
+
+  /** One standalone broker named {@code name} with a journal (persistence on). */
+  static BrokerExtension standalonePersistent(String name) {
+    return new BrokerExtension(name, 1, false, false, true);
   }
 
   /** One standalone broker whose acceptor takes TLS only, with a key made for the test class. */
   static BrokerExtension standaloneWithTls(String name) {
-    return new BrokerExtension(name, 1, false, true);
+    return new BrokerExtension(name, 1, false, true, false);
   }
 
   /** A symmetric cluster of {@code size} brokers named {@code name-1}, {@code name-2}, .... */
@@ -51,7 +59,7 @@ final class BrokerExtension implements BeforeAllCallback, AfterAllCallback {
     if (size < 2) {
       throw new IllegalArgumentException("a cluster needs at least 2 brokers, was " + size);
     }
-    return new BrokerExtension(name, size, true, false);
+    return new BrokerExtension(name, size, true, false, false);
   }
 
   /** The broker, or the first of the cluster. */
@@ -83,7 +91,7 @@ final class BrokerExtension implements BeforeAllCallback, AfterAllCallback {
                 : Optional.empty();
         String brokerName = clustered ? name + "-" + (i + 1) : name;
         StandaloneBroker broker =
-            distribution.create(new BrokerSpec(brokerName, port, user, cluster));
+            distribution.create(new BrokerSpec(brokerName, port, user, cluster, persistent));
         brokers.add(broker);
         if (tls) {
           broker.useTls(

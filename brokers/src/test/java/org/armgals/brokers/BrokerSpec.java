@@ -9,10 +9,12 @@ import java.util.Optional;
 
 /**
  * What a standalone broker instance is created with: its name, the port of its one acceptor on
- * 127.0.0.1, the user a client logs in as, and, for a cluster member, the cluster's credentials and
- * the acceptors of the other members (static connectors).
+ * 127.0.0.1, the user a client logs in as, for a cluster member the cluster's credentials and the
+ * acceptors of the other members (static connectors), and whether it keeps a journal (persistent
+ * messages, durable subscriptions and the duplicate-id cache outlive a kill).
  */
-record BrokerSpec(String name, int port, Credentials user, Optional<ClusterSpec> cluster) {
+record BrokerSpec(
+    String name, int port, Credentials user, Optional<ClusterSpec> cluster, boolean persistent) {
 
   /** A user name and its password. */
   record Credentials(String user, String password) {

@@ -439,6 +439,51 @@ class RobotAsKernelEntityTest {
     assertThat(handled).hasSizeGreaterThan(10);
   }
 
+  @Test
+  void theRobotAndItsMetaShowInJmxAsEveryKernelEntity() throws Exception {
+    ActiveRuntime runtime =
+        ActiveRuntime.builder().name("jmx-robots").workers(1).jmx(false).build();
+    open.add(() -> runtime.shutdown(ShutdownMode.CANCEL, Duration.ofSeconds(5)));
+    Kernel kernel = org.armgals.kernel.StructuralMeta.bootstrap(runtime);
+    open.add(0, kernel);
+    Island island = Island.builder("robots", runtime).jmx(false).build();
+    open.add(0, island);
+    TestRobot robot = TestRobot.create();
+    robot.addSchema(wandering());
+    Script meta = new Script(Damping.none()).at(2, biasFifty());
+    meta.robot = robot;
+    meta.start(kernel);
+    robot.start(
+        island,
+        kind(kernel, robot),
+        meta,
+        island
+            .entityOptions()
+            .withNotification(NotificationPolicy.statesOnly())
+            .withLockStep(1, Duration.ofSeconds(30)));
+    robot.fake.set(TestRobot.WANDER, 5);
+    robot.fake.set(TestRobot.OBSTACLE, 0);
+    island.step(4);
+
+    javax.management.MBeanServer server =
+        java.lang.management.ManagementFactory.getPlatformMBeanServer();
+    javax.management.ObjectName entity =
+        new javax.management.ObjectName(
+            "org.armgals.kernel:type=Entity,runtime=\"jmx-robots\",name=\"test-robot\"");
+    javax.management.ObjectName metaBean =
+        new javax.management.ObjectName(
+            "org.armgals.kernel:type=BehavioralMeta,runtime=\"jmx-robots\",name=\"bmrobot\"");
+    assertThat(server.getAttribute(entity, "BehavioralMeta")).isEqualTo("bmrobot");
+    assertThat((String) server.getAttribute(entity, "State")).contains("cycle=4");
+    assertThat(server.getAttribute(entity, "AppliedVersion")).isEqualTo(1L);
+    assertThat((String[]) server.getAttribute(entity, "Behaviors"))
+        .contains("cycle", "changeModule", "module:wander", "schema:avoid");
+    assertThat(server.getAttribute(metaBean, "AppliedVersions"))
+        .isInstanceOfSatisfying(
+            javax.management.openmbean.TabularData.class,
+            t -> assertThat(t.toString()).contains("test-robot"));
+  }
+
   private List<String> refusals() {
     return heard.stream()
         .filter(e -> e instanceof ReflectionEvent.Applied a && !a.applied())

@@ -56,6 +56,13 @@ public interface Transport extends AutoCloseable {
         Address destination,
         Request<R> request,
         BiConsumer<? super @Nullable R, ? super @Nullable Throwable> answer);
+
+    /**
+     * {@code messages} messages of {@code route} to this runtime never arrived (a gap in the
+     * route's sequence numbers). The runtime tells its error handler ({@link ErrorHandler#onLost}).
+     * Must not throw.
+     */
+    default void lost(String route, long messages) {}
   }
 
   /**

@@ -17,8 +17,9 @@ import org.jspecify.annotations.Nullable;
 /**
  * armgals over the same broker: two runtimes, each with its own {@link JmsTransport} (as two JVMs
  * would have), events from an object reference of one to an active object of the other, and
- * synchronized requests whose answers come back on {@code active/Future}. Every run uses a topic
- * prefix of its own, so that runs never see each other's messages.
+ * synchronized requests whose answers come back on {@code active/Future}; at least once, both types
+ * are given {@link JmsTransport.Guarantee#AT_LEAST_ONCE}. Every run uses a topic prefix of its own,
+ * so that runs never see each other's messages.
  */
 final class ArmgalsJms implements BrokerImpl {
   private static final long TIMEOUT_SECONDS = 60;
@@ -69,19 +70,27 @@ final class ArmgalsJms implements BrokerImpl {
   /** Two runtimes over the broker, closed together. */
   private record Pair(JmsTransport ta, JmsTransport tb, ActiveRuntime a, ActiveRuntime b)
       implements AutoCloseable {
-    static Pair open(BenchBroker broker, Transport transport) {
+    static Pair open(BenchBroker broker, Transport transport, Guarantee guarantee) {
       String prefix = "bench" + RUNS.incrementAndGet();
-      JmsTransport ta = transport(broker, transport, prefix);
-      JmsTransport tb = transport(broker, transport, prefix);
+      JmsTransport ta = transport(broker, transport, guarantee, prefix);
+      JmsTransport tb = transport(broker, transport, guarantee, prefix);
       return new Pair(ta, tb, runtime("a", ta), runtime("b", tb));
     }
 
-    private static JmsTransport transport(BenchBroker broker, Transport transport, String prefix) {
-      return JmsTransport.builder()
-          .broker(broker.url(transport))
-          .prefix(prefix)
-          .allow(Payload.class, Echo.class)
-          .build();
+    private static JmsTransport transport(
+        BenchBroker broker, Transport transport, Guarantee guarantee, String prefix) {
+      JmsTransport.Builder builder =
+          JmsTransport.builder()
+              .broker(
+                  broker.url(transport, guarantee),
+                  broker.user(guarantee),
+                  broker.password(guarantee))
+              .prefix(prefix)
+              .allow(Payload.class, Echo.class);
+      if (guarantee == Guarantee.ALO) {
+        builder.guarantee(JmsTransport.Guarantee.AT_LEAST_ONCE, Payload.class, Echo.class);
+      }
+      return builder.build();
     }
 
     private static ActiveRuntime runtime(String name, JmsTransport transport) {
@@ -98,8 +107,9 @@ final class ArmgalsJms implements BrokerImpl {
   }
 
   @Override
-  public double events(BenchBroker broker, Transport transport, int messages) throws Exception {
-    try (Pair pair = Pair.open(broker, transport)) {
+  public double events(BenchBroker broker, Transport transport, Guarantee guarantee, int messages)
+      throws Exception {
+    try (Pair pair = Pair.open(broker, transport, guarantee)) {
       Sink sink = new Sink(messages);
       ActiveObject<Sink> receiver = pair.b().spawn(sink);
       ActiveRef<Sink> remote = pair.a().ref(receiver.address());
@@ -117,9 +127,9 @@ final class ArmgalsJms implements BrokerImpl {
   }
 
   @Override
-  public long[] futureRoundTrips(BenchBroker broker, Transport transport, int requests)
-      throws Exception {
-    try (Pair pair = Pair.open(broker, transport)) {
+  public long[] futureRoundTrips(
+      BenchBroker broker, Transport transport, Guarantee guarantee, int requests) throws Exception {
+    try (Pair pair = Pair.open(broker, transport, guarantee)) {
       ActiveObject<Sink> servant = pair.b().spawn(new Sink(Integer.MAX_VALUE));
       ActiveRef<Sink> remote = pair.a().ref(servant.address());
       byte[] payload = new byte[BrokerBench.PAYLOAD_BYTES];

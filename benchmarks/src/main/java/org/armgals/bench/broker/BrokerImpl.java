@@ -13,11 +13,13 @@ interface BrokerImpl {
    * sender to one receiver and returns the events per second, from the first send until the last
    * event is received.
    */
-  double events(BenchBroker broker, Transport transport, int messages) throws Exception;
+  double events(BenchBroker broker, Transport transport, Guarantee guarantee, int messages)
+      throws Exception;
 
   /**
    * Makes {@code requests} synchronized requests one after another, waiting for each reply, and
    * returns their round-trip times in nanoseconds.
    */
-  long[] futureRoundTrips(BenchBroker broker, Transport transport, int requests) throws Exception;
+  long[] futureRoundTrips(
+      BenchBroker broker, Transport transport, Guarantee guarantee, int requests) throws Exception;
 }

@@ -70,7 +70,8 @@ final class ReplayCommand implements Callable<Integer> {
         header.cycles(),
         BigDecimal.valueOf(header.period().toNanos(), 6).stripTrailingZeros().toPlainString(),
         header.seed());
-    Replay.Verdict verdict = Replay.replay(simulated, header, text);
+    Replay.Verdict verdict =
+        Replay.replay(simulated, header, text, trace.toAbsolutePath().getParent());
     out.println(verdict.line());
     return verdict instanceof Replay.Differs ? Armgals.FAILED : 0;
   }

@@ -108,16 +108,22 @@ final class DistributedCrew implements Crew {
 
   private void open(
       @Nullable String url,
-      String user,
-      String password,
+      String givenUser,
+      String givenPassword,
       Path logs,
       Duration period,
       Journal journal) {
     String brokerUrl;
+    String user = givenUser;
+    String password = givenPassword;
     if (url == null) {
+      // The embedded broker requires the login it generates for this run; the atoms' JVMs get it
+      // in their environment.
       EmbeddedBroker b = EmbeddedBroker.start(freePort());
       broker = b;
       brokerUrl = b.nettyUrl().orElseThrow();
+      user = b.user();
+      password = b.password();
     } else {
       brokerUrl = url;
     }

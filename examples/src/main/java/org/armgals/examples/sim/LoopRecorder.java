@@ -260,13 +260,28 @@ final class LoopRecorder implements ReflectionListener {
     record.forEach(
         (k, v) -> {
           if (!"cycle".equals(k)) {
-            fields.put(String.valueOf(k), v instanceof java.math.BigDecimal d ? number(d) : v);
+            fields.put(String.valueOf(k), simple(v));
           }
         });
     long cycle = ((Number) requireNonNull(record.get("cycle"), "cycle")).longValue();
     Object meta = fields.get("meta");
     return new Line(
         cycle, meta == null ? BASE : META, meta == null ? "" : meta.toString(), order, fields);
+  }
+
+  /** A value read back from JSON as the record had it: whole numbers long, others double. */
+  private static @Nullable Object simple(@Nullable Object v) {
+    return switch (v) {
+      case null -> null;
+      case java.math.BigDecimal d -> number(d);
+      case Map<?, ?> m -> {
+        Map<String, Object> copy = new LinkedHashMap<>();
+        m.forEach((k, x) -> copy.put(String.valueOf(k), simple(x)));
+        yield copy;
+      }
+      case List<?> l -> l.stream().map(LoopRecorder::simple).toList();
+      default -> v;
+    };
   }
 
   private static Object number(java.math.BigDecimal d) {

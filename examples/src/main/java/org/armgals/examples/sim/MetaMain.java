@@ -20,7 +20,6 @@ import java.util.OptionalLong;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.JmsTransport;
 import org.armgals.active.ShutdownMode;
-import org.armgals.examples.cli.Catalog;
 import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
 import org.armgals.kernel.Entity;
@@ -45,7 +44,29 @@ public final class MetaMain {
   /** How long it waits, at the end, for the answers to the robots' last instants. */
   static final Duration SETTLE = Duration.ofSeconds(30);
 
+  /** The broker's user, in a meta level's JVM's environment (never on its command line). */
+  static final String USER = "ARMGALS_BROKER_USER";
+
+  /** The broker's password, in a meta level's JVM's environment. */
+  static final String PASSWORD = "ARMGALS_BROKER_PASSWORD";
+
   private MetaMain() {}
+
+  private static JmsTransport.Builder login(JmsTransport.Builder builder, String url) {
+    String user = System.getenv(USER);
+    return user == null
+        ? builder.broker(url)
+        : builder.broker(
+            url, user, java.util.Objects.requireNonNullElse(System.getenv(PASSWORD), ""));
+  }
+
+  private static Presence.Builder login(Presence.Builder builder, String url) {
+    String user = System.getenv(USER);
+    return user == null
+        ? builder.broker(url)
+        : builder.broker(
+            url, user, java.util.Objects.requireNonNullElse(System.getenv(PASSWORD), ""));
+  }
 
   /** The arguments of a meta level's JVM for a run of {@code example} with {@code settings}. */
   static List<String> args(String example, String url, String prefix, RunSettings settings) {
@@ -91,18 +112,18 @@ public final class MetaMain {
     LoopRecorder recorder =
         new LoopRecorder(settings.period().toNanos(), null, org.armgals.active.TimeSource.system());
     try (JmsTransport transport =
-        Kernel.allowKernelEvents(JmsTransport.builder().broker(url).prefix(prefix)).build()) {
+        Kernel.allowKernelEvents(login(JmsTransport.builder().prefix(prefix), url)).build()) {
       ActiveRuntime runtime =
           ActiveRuntime.builder().name(name).workers(2).jmx(false).transport(transport).build();
       Kernel kernel =
           org.armgals.kernel.StructuralMeta.bootstrap(
               runtime, KernelOptions.defaults().withJmx(true).withListener(recorder));
       Presence presence =
-          Presence.builder()
-              .broker(url)
+          login(Presence.builder(), url)
               .prefix(prefix)
               .runtime(name)
               .listener(kernel.presenceListener())
+              .failRequestsOf(transport)
               .build();
       try {
         Map<String, StructuralMeta<PState>> kinds = level.kinds(kernel);
@@ -140,18 +161,11 @@ public final class MetaMain {
   }
 
   /**
-   * The example named {@code name}: one of the command line's, or one a jar on the class path
-   * provides as a {@link SimExample} service (a benchmark's robot, say).
+   * The example named {@code name}, among the {@link SimExample} services on the class path: the
+   * shipped robots (listed in examples' {@code META-INF/services}) and any a jar adds (a
+   * benchmark's robot, say).
    */
   static Optional<SimExample> find(String name) {
-    Optional<SimExample> standard =
-        Catalog.standard()
-            .find(name)
-            .filter(SimExample.class::isInstance)
-            .map(SimExample.class::cast);
-    if (standard.isPresent()) {
-      return standard;
-    }
     return java.util.ServiceLoader.load(SimExample.class).stream()
         .map(java.util.ServiceLoader.Provider::get)
         .filter(e -> e.name().equals(name))

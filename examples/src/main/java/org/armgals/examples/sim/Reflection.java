@@ -82,7 +82,7 @@ public final class Reflection implements AutoCloseable {
   private final Map<String, Island> islandOf = new LinkedHashMap<>();
   private final Map<String, BMetaRobot> metaOf = new LinkedHashMap<>();
   private final List<MetaLevel.Watch> watches = new ArrayList<>();
-  private final Map<String, StructuralMeta<PState>> kinds;
+  private Map<String, StructuralMeta<PState>> kinds = Map.of();
   private final ActiveRuntime runtime;
   private final Kernel kernel;
   private @Nullable EmbeddedBroker broker;
@@ -91,6 +91,8 @@ public final class Reflection implements AutoCloseable {
   private @Nullable ChildJvm metaJvm;
   private @Nullable String brokerUrl;
   private @Nullable String prefix;
+  private String user = "";
+  private String password = "";
   private List<Summary.Entry> metaFigures = List.of();
   private boolean finished;
 
@@ -103,17 +105,23 @@ public final class Reflection implements AutoCloseable {
     this.sim = sim;
     this.settings = settings;
     this.example = example;
-    this.level = level;
+    List<Map<String, Object>> replayed = REPLAYING.get();
+    this.level = level != null && replayed != null ? new ReplayedMetaLevel(level, replayed) : level;
     this.journal = journal;
     this.recorder = new LoopRecorder(settings.period().toNanos(), sim::cycle, TimeSource.system());
-    boolean remote = level != null && settings.meta() == RunSettings.MetaPlace.REMOTE;
+    boolean remote = this.level != null && settings.meta() == RunSettings.MetaPlace.REMOTE;
     String name = example + "-" + ProcessHandle.current().pid() + "-" + RUNS.incrementAndGet();
     ActiveRuntime.Builder builder =
         ActiveRuntime.builder().name(name).workers(WORKERS.get()).jmx(false);
     if (remote) {
-      JmsTransport t = connect(name);
-      transport = t;
-      builder.transport(t);
+      try {
+        JmsTransport t = connect(name);
+        transport = t;
+        builder.transport(t);
+      } catch (RuntimeException | Error e) {
+        closeTransport();
+        throw e;
+      }
     }
     runtime = builder.build();
     kernel =
@@ -123,19 +131,30 @@ public final class Reflection implements AutoCloseable {
                 .withTimeSource(sim::timeNanos)
                 .withJmx(true)
                 .withListener(recorder));
+    try {
+      settle(remote, name);
+    } catch (RuntimeException | Error e) {
+      close();
+      throw e;
+    }
+  }
+
+  /** The rest of the opening, once the runtime and the kernel exist: presence, kinds, metas. */
+  private void settle(boolean remote, String name) {
     recorder.ignore(kernel.basicBehavioralMeta().address());
     if (remote) {
       presence =
-          Presence.builder()
-              .broker(requireNonNull(brokerUrl, "brokerUrl"))
+          login(Presence.builder(), requireNonNull(brokerUrl, "brokerUrl"))
               .prefix(requireNonNull(prefix, "prefix"))
               .runtime(name)
               .listener(kernel.presenceListener())
+              .failRequestsOf(requireNonNull(transport, "transport"))
               .build();
     }
-    kinds = level == null ? Map.of() : Map.copyOf(level.kinds(kernel));
-    if (level != null) {
-      for (MetaLevel.Watch w : level.watches(this::note)) {
+    MetaLevel meta = this.level;
+    kinds = meta == null ? Map.of() : Map.copyOf(meta.kinds(kernel));
+    if (meta != null) {
+      for (MetaLevel.Watch w : meta.watches(this::note)) {
         watches.add(w);
         for (String robot : w.robots()) {
           metaOf.put(robot, w.meta());
@@ -146,6 +165,31 @@ public final class Reflection implements AutoCloseable {
         }
       }
     }
+  }
+
+  /** The loop's record of a free run being replayed on this thread; null when not replaying. */
+  private static final ThreadLocal<List<Map<String, Object>>> REPLAYING = new ThreadLocal<>();
+
+  /**
+   * Runs {@code run} with every reflective side it opens on this thread replaying {@code loop}, the
+   * record of a free run: its meta level asks for the requests the record says were applied, at the
+   * cycles it says ({@link ReplayedMetaLevel}).
+   */
+  static <T> T replaying(List<Map<String, Object>> loop, java.util.function.Supplier<T> run) {
+    requireNonNull(loop, "loop");
+    REPLAYING.set(List.copyOf(loop));
+    try {
+      return run.get();
+    } finally {
+      REPLAYING.remove();
+    }
+  }
+
+  /**
+   * Whether this thread replays a free run ({@link #replaying(List, java.util.function.Supplier)}).
+   */
+  static boolean replaying() {
+    return REPLAYING.get() != null;
   }
 
   private static final java.util.concurrent.atomic.AtomicInteger RUNS =
@@ -176,17 +220,36 @@ public final class Reflection implements AutoCloseable {
     return new Reflection(sim, settings, example, level, journal);
   }
 
+  /**
+   * The transport of the robots' runtime: to {@code --broker} (with the login of {@value
+   * MetaMain#USER} and {@value MetaMain#PASSWORD} in the environment, if any), or to an embedded
+   * broker over netty on a free port of 127.0.0.1, which requires the login it generates for this
+   * run; the meta level's JVM gets the login in its environment.
+   */
   private JmsTransport connect(String name) {
     if (settings.broker().isPresent()) {
       brokerUrl = settings.broker().get().toString();
+      user = java.util.Objects.requireNonNullElse(System.getenv(MetaMain.USER), "");
+      password = java.util.Objects.requireNonNullElse(System.getenv(MetaMain.PASSWORD), "");
     } else {
       EmbeddedBroker b = EmbeddedBroker.start(freePort());
       broker = b;
       brokerUrl = b.nettyUrl().orElseThrow();
+      user = b.user();
+      password = b.password();
     }
     prefix = "armgals-" + name;
-    return Kernel.allowKernelEvents(JmsTransport.builder().broker(brokerUrl).prefix(prefix))
-        .build();
+    JmsTransport.Builder b = JmsTransport.builder().prefix(prefix);
+    if (user.isEmpty()) {
+      b.broker(brokerUrl);
+    } else {
+      b.broker(brokerUrl, user, password);
+    }
+    return Kernel.allowKernelEvents(b).build();
+  }
+
+  private Presence.Builder login(Presence.Builder builder, String url) {
+    return user.isEmpty() ? builder.broker(url) : builder.broker(url, user, password);
   }
 
   /** The kernel the robots are entities of. */
@@ -292,7 +355,7 @@ public final class Reflection implements AutoCloseable {
             "the meta level's JVM",
             MetaMain.class,
             MetaMain.args(example, requireNonNull(brokerUrl), requireNonNull(prefix), settings),
-            Map.of(),
+            user.isEmpty() ? Map.of() : Map.of(MetaMain.USER, user, MetaMain.PASSWORD, password),
             out.resolve(META_LOG));
     metaJvm = child;
     awaitFile(child, out.resolve(META_READY));
@@ -454,6 +517,10 @@ public final class Reflection implements AutoCloseable {
     if (presence != null) {
       presence.close();
     }
+    closeTransport();
+  }
+
+  private void closeTransport() {
     if (transport != null) {
       transport.close();
     }

@@ -5,6 +5,7 @@ import static java.util.Objects.requireNonNull;
 import java.io.StringWriter;
 import java.math.BigDecimal;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
@@ -17,6 +18,7 @@ import java.util.OptionalLong;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.armgals.examples.cli.RunSettings;
+import org.jspecify.annotations.Nullable;
 
 /**
  * Runs again the run that wrote a trace, and says whether it wrote the same trace, bit for bit. The
@@ -47,9 +49,16 @@ public final class Replay {
    * @param period its control period
    * @param seed its seed
    * @param atoms the number of atoms, if it was given
+   * @param free whether its robots ran free of their meta level (paced to real time): its meta
+   *     level's requests are then replayed from the loop's record, not decided again
    */
   public record Header(
-      String example, long cycles, Duration period, long seed, Optional<Integer> atoms) {
+      String example,
+      long cycles,
+      Duration period,
+      long seed,
+      Optional<Integer> atoms,
+      boolean free) {
 
     /** Checks the values. */
     public Header {
@@ -101,7 +110,12 @@ public final class Replay {
               : Optional.empty();
       try {
         return new Header(
-            example, cycles, Duration.ofNanos(periodNanos), seed.longValueExact(), atoms);
+            example,
+            cycles,
+            Duration.ofNanos(periodNanos),
+            seed.longValueExact(),
+            atoms,
+            SimRun.FREE.equals(attributes.get(SimRun.PACING)));
       } catch (ArithmeticException e) {
         throw new IllegalArgumentException("the trace's seed " + seed + " is not a whole number");
       }
@@ -208,9 +222,64 @@ public final class Replay {
    * compared with the re-run as far as it goes.
    */
   public static Verdict replay(SimExample example, Header header, String trace) {
+    return replay(example, header, trace, null);
+  }
+
+  /**
+   * {@link #replay(SimExample, Header, String)} of the trace of a run that left its reflective
+   * loop's record ({@value Reflection#LOOP}) in {@code runDir}: a run in lock step must leave the
+   * same record again, compared after the trace; a free run ({@link Header#free()}) is re-run with
+   * its meta level's requests applied where the record says they were, so that its trace comes out
+   * the same.
+   *
+   * @param runDir the run's directory, or null: the trace alone is replayed
+   */
+  public static Verdict replay(
+      SimExample example, Header header, String trace, @Nullable Path runDir) {
     requireNonNull(example, "example");
     requireNonNull(header, "header");
     requireNonNull(trace, "trace");
+    Path loop = runDir == null ? null : runDir.resolve(Reflection.LOOP);
+    if (loop == null || !Files.exists(loop)) {
+      if (header.free()) {
+        return new Differs(
+            -1,
+            "a free run is replayed from its loop's record, "
+                + Reflection.LOOP
+                + ", which is not beside the trace");
+      }
+      return replayTrace(example, header, trace, null);
+    }
+    String written = read(loop);
+    Path again = tempDir();
+    try {
+      Verdict verdict =
+          header.free()
+              ? Reflection.replaying(
+                  records(written), () -> replayTrace(example, header, trace, again))
+              : replayTrace(example, header, trace, again);
+      if (header.free() || !(verdict instanceof Reproduced)) {
+        return verdict; // a free run's meta level was not re-run; a cut run's record is partial
+      }
+      String rerun = read(again.resolve(Reflection.LOOP));
+      if (!rerun.equals(written)) {
+        Verdict loopVerdict = compare("\n" + written, "\n" + rerun);
+        long cycle = loopVerdict instanceof Differs d ? d.cycle() : -1;
+        return new Differs(
+            cycle,
+            "the trace is reproduced, but not the reflective loop's record ("
+                + Reflection.LOOP
+                + "): "
+                + (loopVerdict instanceof Differs d ? d.detail() : "it differs"));
+      }
+      return verdict;
+    } finally {
+      deleteRecursively(again);
+    }
+  }
+
+  private static Verdict replayTrace(
+      SimExample example, Header header, String trace, @Nullable Path loopDir) {
     String complete = trace;
     String why = null;
     if (!trace.isEmpty() && !trace.endsWith("\n")) {
@@ -226,12 +295,57 @@ public final class Replay {
     long cycles = Math.max(0, complete.lines().count() - 1);
     StringWriter again = new StringWriter();
     SimRun.traceOnly(
-        example, header.settings(Path.of(".")), again, why == null ? header.cycles() : cycles);
+        example,
+        header.settings(Path.of(".")),
+        again,
+        why == null ? header.cycles() : cycles,
+        loopDir);
     Verdict verdict = compare(complete, again.toString());
     if (why != null && verdict instanceof Reproduced reproduced) {
       return new ReproducedUpTo(reproduced.cycles(), header.cycles(), why, reproduced.sha256());
     }
     return verdict;
+  }
+
+  private static List<Map<String, Object>> records(String loop) {
+    List<Map<String, Object>> records = new java.util.ArrayList<>();
+    long order = 0;
+    for (String line : loop.lines().toList()) {
+      if (!line.isBlank() && TraceJson.parse(line) instanceof Map<?, ?> m) {
+        LoopRecorder.Line l = LoopRecorder.read(m, order++);
+        Map<String, Object> record = new java.util.LinkedHashMap<>();
+        record.put("cycle", l.cycle());
+        record.putAll(l.fields());
+        records.add(record);
+      }
+    }
+    return records;
+  }
+
+  private static String read(Path file) {
+    try {
+      return Files.readString(file, StandardCharsets.UTF_8);
+    } catch (java.io.IOException e) {
+      throw new java.io.UncheckedIOException("cannot read " + file, e);
+    }
+  }
+
+  private static Path tempDir() {
+    try {
+      return Files.createTempDirectory("armgals-replay");
+    } catch (java.io.IOException e) {
+      throw new java.io.UncheckedIOException("cannot make a directory for the replay's loop", e);
+    }
+  }
+
+  private static void deleteRecursively(Path dir) {
+    try (java.util.stream.Stream<Path> files = Files.walk(dir)) {
+      for (Path f : files.sorted(java.util.Comparator.reverseOrder()).toList()) {
+        Files.deleteIfExists(f);
+      }
+    } catch (java.io.IOException e) {
+      throw new java.io.UncheckedIOException("cannot delete " + dir, e);
+    }
   }
 
   /** Compares the trace as written with the trace of the re-run. */

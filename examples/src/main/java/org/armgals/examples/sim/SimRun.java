@@ -53,6 +53,14 @@ final class SimRun {
   static final String PERIOD_NANOS = "periodNanos";
   static final String ATOMS = "atoms";
 
+  /**
+   * Set to {@value #FREE} when the robots ran free of their meta level (paced to real time): a
+   * replay then re-applies the requests where the loop's record says they were applied.
+   */
+  static final String PACING = "pacing";
+
+  static final String FREE = "free";
+
   private SimRun() {}
 
   static Summary run(SimExample example, RunSettings settings, PrintStream out) {
@@ -172,6 +180,19 @@ final class SimRun {
    * As {@link #traceOnly(SimExample, RunSettings, Writer)}, stopping after {@code limit} cycles.
    */
   static void traceOnly(SimExample example, RunSettings settings, Writer trace, long limit) {
+    traceOnly(example, settings, trace, limit, null);
+  }
+
+  /**
+   * As {@link #traceOnly(SimExample, RunSettings, Writer, long)}, also writing the reflective
+   * loop's record into {@code loopDir} if it is given and the example has a meta level.
+   */
+  static void traceOnly(
+      SimExample example,
+      RunSettings settings,
+      Writer trace,
+      long limit,
+      @org.jspecify.annotations.Nullable Path loopDir) {
     checkBroker(example, settings);
     Scene scene = example.scene(settings);
     long cycles = cycles(example, settings);
@@ -180,8 +201,12 @@ final class SimRun {
       Recording recording = new Recording(scene.params());
       Crew crew = example.start(sim, settings, new RecordingJournal(sim, recording));
       try {
-        for (long i = 0; i < Math.min(limit, cycles); i++) {
+        long ran = Math.min(limit, cycles);
+        for (long i = 0; i < ran; i++) {
           sim.runCycle();
+        }
+        if (loopDir != null && ran > 0) {
+          crew.reflection().ifPresent(r -> r.finish(loopDir));
         }
       } finally {
         crew.close();
@@ -225,6 +250,10 @@ final class SimRun {
             .traceAttribute(CYCLES, Long.toString(cycles))
             .traceAttribute(PERIOD_NANOS, Long.toString(settings.period().toNanos()));
     settings.atoms().ifPresent(n -> builder.traceAttribute(ATOMS, Integer.toString(n)));
+    if ((settings.realTime() || Reflection.replaying())
+        && example.metaLevel(settings).isPresent()) {
+      builder.traceAttribute(PACING, FREE);
+    }
     if (settings.realTime()) {
       builder.pacer(Pacer.realTime());
     }

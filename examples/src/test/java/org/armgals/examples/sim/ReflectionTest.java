@@ -90,4 +90,14 @@ class ReflectionTest {
           .contains("\"event\":\"free\"");
     }
   }
+
+  @Test
+  void everyExampleWithAMetaLevelIsFoundByTheMetaLevelsJvm() {
+    RunSettings settings = settings(java.nio.file.Path.of("unused"), 1);
+    for (org.armgals.examples.cli.Example e : org.armgals.examples.cli.Catalog.standard().all()) {
+      if (e instanceof SimExample sim && sim.metaLevel(settings).isPresent()) {
+        assertThat(MetaMain.find(e.name())).as(e.name()).isPresent();
+      }
+    }
+  }
 }
