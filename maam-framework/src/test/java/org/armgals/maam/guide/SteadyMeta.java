@@ -30,9 +30,9 @@ final class SteadyMeta extends BMetaRobot {
 
   @Override
   public void onNotification(MetaContext context, Notification n) {
-    double lean = (Double) observation(n).orElseThrow().get(BalancingAtom.LEAN);
-    if (gain >= 5) {
-      return;
+    if (gain >= 5
+        || !(observation(n).orElse(Map.of()).get(BalancingAtom.LEAN) instanceof Double lean)) {
+      return; // as strong as it goes, or not a state (a lost runtime's failure passes any filter)
     }
     Adaptation stronger =
         RobotKind.because(
