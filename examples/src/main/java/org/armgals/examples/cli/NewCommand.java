@@ -26,13 +26,16 @@ import picocli.CommandLine.Parameters;
 
 /**
  * {@code armgals new <name>}: writes the skeleton of a robot, a small Maven project whose sources
- * follow the four steps of §5.4 (signals, modules, a robot class that registers its schemas, and a
- * simulated example with a {@code main}), with a JUnit 5 test that the robot crawls and armgals'
- * own Maven wrapper; it builds, passes its test and runs as written, formatted as armgals' sources
- * are. The templates are resources next to this class ({@code skeleton/*.tmpl}); their placeholders
- * are {@code ${name}}, {@code ${Name}}, {@code ${package}}, {@code ${version}} (the version of
- * armgals that writes them) and {@code ${junit}}. It refuses to write inside an armgals checkout,
- * whose build takes every {@code src} directory below it for its own.
+ * follow the four steps of §5.4 (signals, modules, a robot class that registers its schemas and
+ * says what it shows its meta level) and figure 8 (the robot's kind with a catalog, a behavioral
+ * meta level, and a simulated example with a {@code main} that runs the robot as a kernel entity
+ * with its meta level in its JVM or in another), with JUnit 5 tests that the robot crawls and that
+ * its meta level adapts it, and armgals' own Maven wrapper; it builds, passes its tests and runs as
+ * written, formatted as armgals' sources are. The templates are resources next to this class
+ * ({@code skeleton/*.tmpl}); their placeholders are {@code ${name}}, {@code ${Name}}, {@code
+ * ${package}}, {@code ${version}} (the version of armgals that writes them) and {@code ${junit}}.
+ * It refuses to write inside an armgals checkout, whose build takes every {@code src} directory
+ * below it for its own.
  */
 @Command(
     name = "new",
@@ -48,11 +51,12 @@ final class NewCommand implements Callable<Integer> {
   private static final Pattern PLACEHOLDER = Pattern.compile("\\$\\{(\\w+)}");
 
   /** The lines that mark the regions docs/user-guide.md shows; a skeleton goes without them. */
-  private static final Pattern TAG_LINE = Pattern.compile("(?m)^[ \\t]*// (tag|end)::\\w+\\[]\\R");
+  private static final Pattern TAG_LINE =
+      Pattern.compile("(?m)^[ \\t]*// (tag|end)::[\\w.-]+\\[]\\R");
 
   /**
-   * Template, and where it goes: {@code JAVA/} for the package's source directory, {@code TEST/}
-   * for its test directory.
+   * Template, and where it goes: {@code JAVA/} for the package's source directory, {@code
+   * RESOURCES/} for the main resources, {@code TEST/} for the package's test directory.
    */
   private static final List<String[]> FILES =
       List.of(
@@ -61,7 +65,12 @@ final class NewCommand implements Callable<Integer> {
           new String[] {"Signals.java.tmpl", "JAVA/Signals.java"},
           new String[] {"Modules.java.tmpl", "JAVA/Modules.java"},
           new String[] {"Robot.java.tmpl", "JAVA/${Name}Robot.java"},
+          new String[] {"Meta.java.tmpl", "JAVA/${Name}Meta.java"},
           new String[] {"Example.java.tmpl", "JAVA/${Name}Example.java"},
+          new String[] {
+            "SimExample.services.tmpl",
+            "RESOURCES/META-INF/services/org.armgals.examples.sim.SimExample"
+          },
           new String[] {"RobotTest.java.tmpl", "TEST/${Name}RobotTest.java"});
 
   /** The Maven wrapper, copied as it is (the build puts armgals' own beside the templates). */
@@ -139,6 +148,7 @@ final class NewCommand implements Callable<Integer> {
             "junit",
             built("junit"));
     Path sources = target.resolve("src/main/java").resolve(name);
+    Path resources = target.resolve("src/main/resources");
     Path tests = target.resolve("src/test/java").resolve(name);
     try {
       Files.createDirectories(sources);
@@ -147,11 +157,9 @@ final class NewCommand implements Callable<Integer> {
       for (String[] file : FILES) {
         String place = fill(file[1], values);
         Path path =
-            place.startsWith("JAVA/")
-                ? sources.resolve(place.substring("JAVA/".length()))
-                : place.startsWith("TEST/")
-                    ? tests.resolve(place.substring("TEST/".length()))
-                    : target.resolve(place);
+            placed(
+                place, target, Map.of("JAVA/", sources, "RESOURCES/", resources, "TEST/", tests));
+        Files.createDirectories(path.getParent());
         String text =
             TAG_LINE.matcher(new String(template(file[0]), StandardCharsets.UTF_8)).replaceAll("");
         Files.writeString(path, fill(text, values), StandardCharsets.UTF_8);
@@ -170,6 +178,16 @@ final class NewCommand implements Callable<Integer> {
     } catch (IOException e) {
       throw new UncheckedIOException("cannot write the skeleton in " + target, e);
     }
+  }
+
+  /** Where {@code place} goes: under the directory its prefix names, or under {@code target}. */
+  private static Path placed(String place, Path target, Map<String, Path> directories) {
+    for (Map.Entry<String, Path> d : directories.entrySet()) {
+      if (place.startsWith(d.getKey())) {
+        return d.getValue().resolve(place.substring(d.getKey().length()));
+      }
+    }
+    return target.resolve(place);
   }
 
   /** The armgals checkout {@code target} would be in, if any: the nearest with armgals' POM. */

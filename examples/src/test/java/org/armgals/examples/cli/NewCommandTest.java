@@ -54,7 +54,9 @@ class NewCommandTest {
             "src/main/java/mybot/Signals.java",
             "src/main/java/mybot/Modules.java",
             "src/main/java/mybot/MybotRobot.java",
+            "src/main/java/mybot/MybotMeta.java",
             "src/main/java/mybot/MybotExample.java",
+            "src/main/resources/META-INF/services/org.armgals.examples.sim.SimExample",
             "src/test/java/mybot/MybotRobotTest.java",
             "mvnw",
             "mvnw.cmd",
@@ -67,7 +69,7 @@ class NewCommandTest {
         .contains("<artifactId>maam-sim</artifactId>")
         .contains("<version>${armgals.version}</version>")
         .contains("<mainClass>mybot.MybotExample</mainClass>");
-    for (Path file : written.subList(0, 7)) {
+    for (Path file : written.subList(0, 9)) {
       assertThat(Files.readString(file, StandardCharsets.UTF_8))
           .as("%s has no placeholder left but Maven's", file)
           .doesNotContainPattern("\\$\\{(name|Name|package|version)}")
@@ -79,6 +81,54 @@ class NewCommandTest {
     assertThat(dir.resolve("classes/mybot/MybotExample.class")).exists();
     assertThat(dir.resolve("classes/mybot/MybotRobotTest.class")).exists();
     assertThat(runBriefly()).contains(new Summary.Entry("robot cycles", "10"));
+    assertThat(
+            Files.readString(
+                target.resolve(
+                    "src/main/resources/META-INF/services/org.armgals.examples.sim.SimExample")))
+        .contains("\nmybot.MybotExample\n");
+  }
+
+  @Test
+  void theSkeletonsMetaLevelRunsInAJvmOfItsOwnAndGivesTheSameRunAsInTheRobotsJvm()
+      throws Exception {
+    Path target = dir.resolve("mybot");
+    List<Path> written = NewCommand.write("mybot", target, "9.9.9-TEST");
+    assertThat(compile(written.stream().filter(p -> p.toString().endsWith(".java")).toList()))
+        .isEmpty();
+    Path services = Path.of("META-INF/services/org.armgals.examples.sim.SimExample");
+    Files.createDirectories(dir.resolve("classes").resolve(services).getParent());
+    Files.copy(
+        target.resolve("src/main/resources").resolve(services),
+        dir.resolve("classes").resolve(services));
+    List<String> run = List.of("run", "mybot", "--cycles", "150", "--out");
+
+    // The robot's JVM is a child too: a meta level's JVM gets its class path, the skeleton's with
+    // it.
+    Map<String, String> results = new java.util.LinkedHashMap<>();
+    for (String place : List.of("local", "remote")) {
+      List<String> command = new ArrayList<>();
+      command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+      command.addAll(List.of("-cp", dir.resolve("classes") + File.pathSeparator + classPathText()));
+      command.add("mybot.MybotExample");
+      command.addAll(run);
+      command.addAll(List.of(dir.resolve(place).toString(), "--meta", place));
+      Process java = new ProcessBuilder(command).redirectErrorStream(true).start();
+      String out = new String(java.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+      assertThat(java.waitFor()).as(out).isZero();
+      results.put(place, out);
+    }
+
+    assertThat(results.get("remote")).contains("remote, in a JVM of its own over the broker");
+    assertThat(results.get("local")).contains("local, in the robots' JVM");
+    for (String file : List.of("trace.jsonl", "loop.jsonl")) {
+      String local = Files.readString(dir.resolve("local").resolve(file), StandardCharsets.UTF_8);
+      assertThat(local).as(file).contains("\"cycle\":1");
+      assertThat(Files.readString(dir.resolve("remote").resolve(file), StandardCharsets.UTF_8))
+          .as(file + ", remote against local")
+          .isEqualTo(local);
+    }
+    assertThat(Files.readString(dir.resolve("local/loop.jsonl"), StandardCharsets.UTF_8))
+        .contains("\"event\":\"applied\"");
   }
 
   @Test
@@ -258,6 +308,10 @@ class NewCommandTest {
       }
       return found;
     }
+  }
+
+  private static String classPathText() throws IOException {
+    return String.join(File.pathSeparator, classPath());
   }
 
   /**

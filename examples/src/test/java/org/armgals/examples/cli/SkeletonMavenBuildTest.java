@@ -18,14 +18,15 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * A skeleton of {@code armgals new} builds, passes its test and runs with Maven, as its README
- * says: {@code ./mvnw verify exec:java}, through its own Maven wrapper, on this JDK.
+ * A skeleton of {@code armgals new} builds, passes its tests and runs with Maven, as its README
+ * says: {@code ./mvnw verify exec:java}, through its own Maven wrapper, on this JDK; and {@code
+ * exec:exec} runs it with its meta level in a JVM of its own, the same run.
  *
  * <p>Which Maven build: a real one, offline. The armgals artifacts it depends on are not in the
  * local repository (this build never installs them), so the test stages them in a repository of its
  * own, from this build's {@code target/classes} and POMs, and gives Maven the build's local
  * repository (for the plugins, JUnit and the third-party jars) as a read-only tail ({@code
- * maven.repo.local.tail}, Maven 3.9): nothing is written there. It takes 20 to 40 s.
+ * maven.repo.local.tail}, Maven 3.9): nothing is written there. It takes 30 to 60 s.
  */
 class SkeletonMavenBuildTest {
   private static final Path CHECKOUT = Path.of("").toAbsolutePath().getParent();
@@ -33,7 +34,8 @@ class SkeletonMavenBuildTest {
   @TempDir Path dir;
 
   @Test
-  void theSkeletonBuildsPassesItsTestAndRunsWithItsMavenWrapperOffline() throws Exception {
+  void theSkeletonBuildsPassesItsTestsAndRunsWithItsMavenWrapperOfflineItsMetaLocalOrRemote()
+      throws Exception {
     String version = NewCommand.version();
     Path repository = dir.resolve("repository");
     stage(repository, version);
@@ -42,33 +44,62 @@ class SkeletonMavenBuildTest {
     Path local = Path.of(System.getProperty("armgals.localRepository", "(unset)"));
     assertThat(local).as("the build's local repository").isDirectory();
 
-    ProcessBuilder command =
-        new ProcessBuilder(
+    String out =
+        maven(
+            project,
+            repository,
+            local,
+            "-Dexec.args=run mybot --cycles 100 --out runs/mybot",
+            "verify",
+            "exec:java");
+    assertThat(out)
+        .as(out)
+        .contains("Tests run: 2, Failures: 0, Errors: 0, Skipped: 0")
+        .contains("summary of mybot:")
+        .containsPattern("robot cycles +100")
+        .contains("local, in the robots' JVM");
+    assertThat(project.resolve("runs/mybot/trace.jsonl")).isNotEmptyFile();
+
+    // As its README says: the meta level in a JVM of its own needs the robot's in one of its own.
+    String remote =
+        maven(
+            project,
+            repository,
+            local,
+            "-Dexec.args=-cp %classpath mybot.MybotExample run mybot --cycles 100 --meta remote"
+                + " --out runs/remote",
+            "exec:exec");
+    assertThat(remote)
+        .as(remote)
+        .contains("remote, in a JVM of its own over the broker")
+        .containsPattern("robot cycles +100");
+    assertThat(project.resolve("runs/remote/loop.jsonl"))
+        .hasSameTextualContentAs(project.resolve("runs/mybot/loop.jsonl"));
+    assertThat(repository.resolve("org/junit")).doesNotExist(); // the tail was only read
+  }
+
+  /** Runs the skeleton's Maven wrapper offline with {@code arguments}; answers what it printed. */
+  private static String maven(Path project, Path repository, Path local, String... arguments)
+      throws Exception {
+    List<String> command =
+        new java.util.ArrayList<>(
+            List.of(
                 project.resolve("mvnw").toString(),
                 "-B",
                 "-o",
                 "-Dmaven.repo.local=" + repository,
-                "-Dmaven.repo.local.tail=" + local,
-                "-Dexec.args=run mybot --cycles 100 --out runs/mybot",
-                "verify",
-                "exec:java")
-            .directory(project.toFile())
-            .redirectErrorStream(true);
-    command.environment().put("JAVA_HOME", System.getProperty("java.home"));
-    command.environment().remove("MAVEN_OPTS");
-    command.environment().remove("MAVEN_ARGS");
-    Process maven = command.start();
+                "-Dmaven.repo.local.tail=" + local));
+    command.addAll(List.of(arguments));
+    ProcessBuilder builder =
+        new ProcessBuilder(command).directory(project.toFile()).redirectErrorStream(true);
+    builder.environment().put("JAVA_HOME", System.getProperty("java.home"));
+    builder.environment().remove("MAVEN_OPTS");
+    builder.environment().remove("MAVEN_ARGS");
+    Process maven = builder.start();
     String out = new String(maven.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
     assertThat(maven.waitFor(5, TimeUnit.MINUTES)).isTrue();
-
     assertThat(maven.exitValue()).as(out).isZero();
-    assertThat(out)
-        .as(out)
-        .contains("Tests run: 1, Failures: 0, Errors: 0, Skipped: 0")
-        .contains("summary of mybot:")
-        .containsPattern("robot cycles +100");
-    assertThat(project.resolve("runs/mybot/trace.jsonl")).isNotEmptyFile();
-    assertThat(repository.resolve("org/junit")).doesNotExist(); // the tail was only read
+    return out;
   }
 
   /**

@@ -1,8 +1,10 @@
 package org.armgals.maam.guide;
 
 import java.time.Duration;
+import java.util.Map;
 import org.armgals.active.TimeSource;
 import org.armgals.maam.AbstractRobot;
+import org.armgals.maam.Emission;
 import org.armgals.maam.PortRef;
 import org.armgals.maam.Schema;
 import org.armgals.maam.Suppressor;
@@ -11,11 +13,17 @@ import org.armgals.maam.guide.Modules.BatterySensor;
 import org.armgals.maam.guide.Modules.LegDrive;
 import org.armgals.maam.guide.Modules.Rest;
 import org.armgals.maam.guide.Modules.TiltSensor;
+import org.armgals.maam.guide.Signals.Tilted;
 import org.armgals.maam.spi.Body;
 
-/** Step 4: the robot class, registering the schemas of step 1 and their subsumption. */
+/**
+ * Step 4: the robot class, registering the schemas of step 1 and their subsumption, and saying what
+ * it shows its meta level.
+ */
 // tag::robot[]
 final class BalancingAtom extends AbstractRobot {
+  /** The observed lean, radians: 0 while level. */
+  static final String LEAN = "lean";
 
   BalancingAtom(Body body, TimeSource time) {
     super("balancer", body, time);
@@ -44,6 +52,20 @@ final class BalancingAtom extends AbstractRobot {
             PortRef.of(rest, Modules.STANCE),
             PortRef.of(balance, Modules.STANCE),
             Duration.ofMillis(50)));
+  }
+
+  /** What it shows its meta level each cycle: the robot's own values, and how far it leans. */
+  @Override
+  protected Map<String, Object> observe() {
+    Map<String, Object> seen = super.observe(); // cycle, program, schemas, errors
+    double lean = 0;
+    for (Emission e : emissions()) { // the signals of this cycle, after suppression
+      if (e.signal() instanceof Tilted t) {
+        lean = Math.max(Math.abs(t.roll()), Math.abs(t.pitch()));
+      }
+    }
+    seen.put(LEAN, lean);
+    return seen;
   }
 }
 // end::robot[]
