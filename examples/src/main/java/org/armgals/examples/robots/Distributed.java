@@ -128,9 +128,7 @@ public final class Distributed implements SimExample {
         settings.broker().map(Object::toString).orElse(null),
         user == null ? "" : user,
         password == null ? "" : password,
-        settings.out(),
-        settings.period(),
-        settings.realTime(),
+        settings,
         journal);
   }
 }

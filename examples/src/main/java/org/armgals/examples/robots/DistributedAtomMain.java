@@ -2,12 +2,14 @@ package org.armgals.examples.robots;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
 import org.armgals.active.JmsTransport;
 import org.armgals.active.ShutdownMode;
+import org.armgals.examples.sim.LoopRecord;
 import org.armgals.gals.Emission;
 import org.armgals.gals.Island;
 import org.armgals.kernel.Kernel;
@@ -34,8 +36,8 @@ import org.armgals.representation.p.PState;
  *
  * <p>Arguments: atom id, index in the chain, atoms in the chain, broker URL, topic prefix, the
  * world's address (runtime and id), the island's period in nanoseconds, the battery's capacity in
- * J. The broker's credentials, if any, come in the environment ({@value #USER}, {@value
- * #PASSWORD}).
+ * J, the file its robot's side of the reflective loop's record goes to when it leaves. The broker's
+ * credentials, if any, come in the environment ({@value #USER}, {@value #PASSWORD}).
  */
 final class DistributedAtomMain {
   static final String USER = "ARMGALS_BROKER_USER";
@@ -51,7 +53,8 @@ final class DistributedAtomMain {
       String prefix,
       Address world,
       Duration period,
-      double capacity) {
+      double capacity,
+      Path loop) {
     return List.of(
         Integer.toString(atom),
         Integer.toString(index),
@@ -61,13 +64,14 @@ final class DistributedAtomMain {
         world.runtime(),
         Long.toString(world.id()),
         Long.toString(period.toNanos()),
-        Double.toString(capacity));
+        Double.toString(capacity),
+        loop.toAbsolutePath().toString());
   }
 
   public static void main(String[] args) throws IOException {
-    if (args.length != 9) {
+    if (args.length != 10) {
       System.err.println(
-          "expected 9 arguments (see DistributedAtomMain's javadoc), got " + args.length);
+          "expected 10 arguments (see DistributedAtomMain's javadoc), got " + args.length);
       System.exit(2);
     }
     int atom = Integer.parseInt(args[0]);
@@ -78,6 +82,7 @@ final class DistributedAtomMain {
     Address world = new Address(args[5], Long.parseLong(args[6]));
     Duration period = Duration.ofNanos(Long.parseLong(args[7]));
     double capacity = Double.parseDouble(args[8]);
+    Path loopFile = Path.of(args[9]);
     long pid = ProcessHandle.current().pid();
     String name = "atom" + atom + "-" + pid;
     String user = System.getenv(USER);
@@ -92,6 +97,11 @@ final class DistributedAtomMain {
     }
     DistributedRemoteBody body = new DistributedRemoteBody(atom);
     Notified notified = new Notified(DistributedCrawler.robotName(atom));
+    // The robot's side of the loop, at the world's cycle of the last readings.
+    LoopRecord loop =
+        new LoopRecord(
+                period.toNanos(), () -> Math.max(0, body.worldTimeNanos()) / period.toNanos())
+            .watch(DistributedCrawler.robotName(atom));
     try (JmsTransport transport = builder.build()) {
       ActiveRuntime runtime =
           ActiveRuntime.builder().name(name).workers(1).jmx(false).transport(transport).build();
@@ -101,7 +111,11 @@ final class DistributedAtomMain {
                   KernelOptions.defaults()
                       .withJmx(false)
                       .withTimeSource(() -> Math.max(0, body.worldTimeNanos()))
-                      .withListener(notified));
+                      .withListener(
+                          event -> {
+                            notified.on(event);
+                            loop.on(event);
+                          }));
           Island island =
               Island.builder("atom" + atom, runtime).period(period).jmx(false).build()) {
         DistributedCrawler[] self = new DistributedCrawler[1];
@@ -141,6 +155,7 @@ final class DistributedAtomMain {
         while (in.read() != -1) {
           // The world says nothing on this pipe: its end is the signal to leave.
         }
+        loop.write(loopFile);
         System.out.println(
             "atom "
                 + atom

@@ -29,9 +29,12 @@ import org.armgals.active.EmbeddedBroker;
 import org.armgals.active.JmsTransport;
 import org.armgals.active.ShutdownMode;
 import org.armgals.active.TimeSource;
+import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
 import org.armgals.examples.sim.Crew;
 import org.armgals.examples.sim.Journal;
+import org.armgals.examples.sim.LoopRecord;
+import org.armgals.examples.sim.Reflection;
 import org.armgals.kernel.Kernel;
 import org.armgals.kernel.Stimulus;
 import org.armgals.maam.sim.Simulation;
@@ -74,6 +77,10 @@ final class DistributedCrew implements Crew {
   private final Duration patience;
   private final boolean lockStep;
   private final Journal journal;
+  private final RunSettings settings;
+  private final LoopRecord loop;
+  private final List<Path> loopFiles = new ArrayList<>();
+  private boolean finished;
   private final List<DistributedAtomProcess> processes = new ArrayList<>();
   private final List<DistributedWire.Joined> joined = new ArrayList<>();
   private final Map<Integer, Long> missedOf = new TreeMap<>();
@@ -89,11 +96,14 @@ final class DistributedCrew implements Crew {
   private long missed;
   private long awaited;
 
-  private DistributedCrew(Simulation sim, Duration patience, boolean lockStep, Journal journal) {
+  private DistributedCrew(
+      Simulation sim, Duration patience, RunSettings settings, Journal journal) {
     this.sim = sim;
     this.patience = patience;
-    this.lockStep = lockStep;
+    this.settings = settings;
+    this.lockStep = !settings.realTime();
     this.journal = journal;
+    this.loop = new LoopRecord(settings.period().toNanos(), sim::cycle);
   }
 
   /**
@@ -101,7 +111,8 @@ final class DistributedCrew implements Crew {
    * waits until every atom has joined, and installs the controllers.
    *
    * @param url an external broker, or null for an embedded one
-   * @param logs the directory of the atoms' logs
+   * @param settings the run's: the directory of the atoms' logs ({@code out}), the period, lock
+   *     step or real time
    * @throws IllegalArgumentException the external broker cannot be reached, saying what to do
    * @throws IllegalStateException an atom's JVM did not start or join, naming it; nothing is left
    *     running
@@ -111,16 +122,16 @@ final class DistributedCrew implements Crew {
       @Nullable String url,
       String user,
       String password,
-      Path logs,
-      Duration period,
-      boolean realTime,
+      RunSettings settings,
       Journal journal) {
     requireNonNull(sim, "sim");
+    requireNonNull(settings, "settings");
     requireNonNull(journal, "journal");
+    Duration period = settings.period();
     DistributedCrew crew =
-        new DistributedCrew(sim, realTime ? period : LOCKSTEP_WAIT, !realTime, journal);
+        new DistributedCrew(sim, settings.realTime() ? period : LOCKSTEP_WAIT, settings, journal);
     try {
-      crew.open(url, user, password, logs, period);
+      crew.open(url, user, password, settings.out(), period);
       return crew;
     } catch (RuntimeException | Error e) {
       crew.close();
@@ -187,17 +198,19 @@ final class DistributedCrew implements Crew {
     world = w;
     ActiveObject<DistributedWorld> m = r.spawn(w);
     mailbox = m;
-    DistributedMetaLevel level = DistributedMetaLevel.open(r, period.toNanos(), time);
+    DistributedMetaLevel level = DistributedMetaLevel.open(r, period.toNanos(), time, loop);
     metaLevel = level;
     double capacity = sim.scene().params().batteryCapacity();
     List<Integer> ids = sim.atomIds();
     for (int i = 0; i < ids.size(); i++) {
       int atom = ids.get(i);
+      Path loopFile = logs.resolve(".atom-" + atom + "-loop.jsonl");
+      loopFiles.add(loopFile);
       DistributedAtomProcess p =
           DistributedAtomProcess.start(
               atom,
               DistributedAtomMain.args(
-                  atom, i, ids.size(), brokerUrl, prefix, m.address(), period, capacity),
+                  atom, i, ids.size(), brokerUrl, prefix, m.address(), period, capacity, loopFile),
               logs.resolve("atom-" + atom + ".log"),
               user,
               password);
@@ -372,6 +385,31 @@ final class DistributedCrew implements Crew {
         strokes.getOrDefault(atom, new TreeMap<>()));
   }
 
+  /**
+   * After the last cycle: in lock step waits until the meta has handled the notifications of the
+   * last readings, then lets the atoms leave (each writes its robot's side of the loop's record as
+   * it does) and merges every side into {@code dir}'s {@value Reflection#LOOP}.
+   *
+   * @throws IllegalStateException it finished already
+   */
+  @Override
+  public List<Summary.Entry> finish(Path dir) {
+    requireNonNull(dir, "dir");
+    if (finished) {
+      throw new IllegalStateException("the loop of this run is finished already");
+    }
+    finished = true;
+    keepUp(requireNonNull(world, "world"));
+    processes.forEach(DistributedAtomProcess::leave);
+    processes.forEach(DistributedAtomProcess::close);
+    return LoopRecord.finish(
+        dir,
+        loop,
+        loopFiles,
+        settings,
+        "in the world's JVM, apart from every atom's, over the broker");
+  }
+
   @Override
   public long missedCycles() {
     return missed;
@@ -394,13 +432,7 @@ final class DistributedCrew implements Crew {
     if (level == null) {
       return figures;
     }
-    Map<Integer, Long> sent = new TreeMap<>();
-    DistributedWorld w = requireNonNull(world, "world");
-    for (DistributedWire.Joined j : joined) {
-      DistributedWire.Commands last = w.latest(j.atom());
-      sent.put(j.atom(), last == null ? 0 : last.notified());
-    }
-    figures.addAll(level.figures(sent, lockStep, patience));
+    figures.addAll(level.figures(lockStep, patience));
     for (DistributedWire.Joined j : joined) {
       figures.add(
           new Summary.Entry(

@@ -11,7 +11,6 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
-import java.util.concurrent.atomic.LongAdder;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.BooleanSupplier;
 import org.armgals.active.ActiveRuntime;
@@ -19,13 +18,12 @@ import org.armgals.active.JmsTransport;
 import org.armgals.active.TimeSource;
 import org.armgals.examples.cli.Summary;
 import org.armgals.examples.sim.Journal;
+import org.armgals.examples.sim.LoopRecord;
 import org.armgals.kernel.Entity;
 import org.armgals.kernel.Kernel;
 import org.armgals.kernel.KernelOptions;
 import org.armgals.kernel.ModelView;
-import org.armgals.kernel.ReflectionEvent;
 import org.armgals.kernel.StructuralMeta;
-import org.armgals.kernel.spi.ReflectionListener;
 import org.armgals.representation.p.PState;
 
 /**
@@ -51,15 +49,17 @@ final class DistributedMetaLevel implements AutoCloseable {
   private final Kernel kernel;
   private final DistributedMeta meta;
   private final StructuralMeta<PState> kind;
-  private final Loop loop = new Loop();
+  private final LoopRecord loop;
   private final Map<Integer, Entity> robots = new LinkedHashMap<>();
   private final Map<String, Integer> atoms = new LinkedHashMap<>();
   private final Set<String> journaled = new HashSet<>();
   private final Map<String, ModelView> answered = new LinkedHashMap<>();
   private long gaveUp;
 
-  private DistributedMetaLevel(ActiveRuntime runtime, long periodNanos, TimeSource time) {
+  private DistributedMetaLevel(
+      ActiveRuntime runtime, long periodNanos, TimeSource time, LoopRecord loop) {
     this.time = time;
+    this.loop = loop.watchMeta(DistributedMeta.NAME);
     this.kernel =
         org.armgals.kernel.StructuralMeta.bootstrap(
             runtime, KernelOptions.defaults().withJmx(true).withListener(loop));
@@ -75,12 +75,15 @@ final class DistributedMetaLevel implements AutoCloseable {
 
   /**
    * The meta level of a run whose world's runtime is {@code runtime} (its transport allows the
-   * kernel's events) and whose control period is {@code periodNanos}.
+   * kernel's events) and whose control period is {@code periodNanos}; {@code loop} records the
+   * meta's side of the reflective loop.
    */
-  static DistributedMetaLevel open(ActiveRuntime runtime, long periodNanos, TimeSource time) {
+  static DistributedMetaLevel open(
+      ActiveRuntime runtime, long periodNanos, TimeSource time, LoopRecord loop) {
     requireNonNull(runtime, "runtime");
     requireNonNull(time, "time");
-    return new DistributedMetaLevel(runtime, periodNanos, time);
+    requireNonNull(loop, "loop");
+    return new DistributedMetaLevel(runtime, periodNanos, time, loop);
   }
 
   /**
@@ -94,6 +97,7 @@ final class DistributedMetaLevel implements AutoCloseable {
    */
   void take(int atom, JmsTransport names, Duration timeout, BooleanSupplier ended) {
     String name = DistributedCrawler.robotName(atom);
+    loop.watch(name);
     Entity robot = kernel.lookupRemote(names, name, kind);
     meta.addBaseLevelEntity(robot).touch();
     meta.setFilter(robot, DistributedMeta.THRESHOLDS_ONLY).touch();
@@ -217,42 +221,23 @@ final class DistributedMetaLevel implements AutoCloseable {
   }
 
   /**
-   * The summary's figures of the meta level.
+   * The summary's figures of this meta level, beside the loop's ({@link LoopRecord#finish}): where
+   * it runs and what it takes, what it asked of each robot, and how the world waited for it.
    *
-   * @param sent the notifications each atom's robot had sent when it last answered, by atom
    * @param lockStep whether the world waited for the meta
    * @param patience how long a wait for it lasted at most
    */
-  List<Summary.Entry> figures(Map<Integer, Long> sent, boolean lockStep, Duration patience) {
+  List<Summary.Entry> figures(boolean lockStep, Duration patience) {
     List<Summary.Entry> figures = new ArrayList<>();
     figures.add(
         new Summary.Entry(
-            "meta level",
+            "meta-entity",
             DistributedMeta.NAME
-                + " in the world's JVM, apart from every atom's; takes "
+                + " takes "
                 + String.join(", ", atoms.keySet())
                 + " by name through the broker; filter \""
                 + DistributedMeta.THRESHOLDS_ONLY
                 + "\""));
-    figures.add(
-        new Summary.Entry(
-            "notifications",
-            sent.values().stream().mapToLong(Long::longValue).sum()
-                + " sent (as the atoms' last answers say), "
-                + loop.received.sum()
-                + " received, "
-                + loop.passed.sum()
-                + " through its filter"));
-    long applied = atoms.values().stream().filter(this::applied).count();
-    figures.add(
-        new Summary.Entry(
-            "requests",
-            meta.decisions().size()
-                + " ("
-                + applied
-                + " acknowledged applied, "
-                + (answered.size() - applied)
-                + " refused)"));
     figures.add(
         new Summary.Entry(
             "world waits for its meta",
@@ -271,21 +256,5 @@ final class DistributedMetaLevel implements AutoCloseable {
   @Override
   public void close() {
     kernel.close();
-  }
-
-  /** Counts what the meta received and what passed its filter. */
-  private static final class Loop implements ReflectionListener {
-    final LongAdder received = new LongAdder();
-    final LongAdder passed = new LongAdder();
-
-    @Override
-    public void on(ReflectionEvent event) {
-      if (event instanceof ReflectionEvent.Received r && r.meta().equals(DistributedMeta.NAME)) {
-        received.increment();
-        if (r.passed()) {
-          passed.increment();
-        }
-      }
-    }
   }
 }

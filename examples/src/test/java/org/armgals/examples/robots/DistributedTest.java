@@ -24,7 +24,9 @@ import java.util.concurrent.TimeUnit;
 import org.armgals.examples.cli.Armgals;
 import org.armgals.examples.cli.Catalog;
 import org.armgals.examples.cli.RunSettings;
+import org.armgals.examples.cli.Summary;
 import org.armgals.examples.sim.Journal;
+import org.armgals.examples.sim.Reflection;
 import org.armgals.maam.sim.Simulation;
 import org.armgals.maam.sim.Vec3;
 import org.junit.jupiter.api.Test;
@@ -47,8 +49,8 @@ class DistributedTest {
     Distributed example = new Distributed(SMALL_BATTERY);
     RunSettings settings = settings(dir, 2);
 
-    Run first = run(example, settings, 100);
-    Run second = run(example, settings, 100);
+    Run first = run(example, settings, 100, dir.resolve("first"));
+    Run second = run(example, settings, 100, dir.resolve("second"));
 
     long self = ProcessHandle.current().pid();
     assertThat(first.joined).extracting(DistributedWire.Joined::atom).containsExactly(1, 2);
@@ -78,7 +80,37 @@ class DistributedTest {
           .contains(
               "adaptation: stroke 0.45 → 0.25 rad from "
                   + String.format(java.util.Locale.ROOT, "%.2f s", d.fromNanos() / 1e9));
+      // The loop's record: the request from the meta's side (the world's JVM), decided on the
+      // threshold's cycle, and applied on the robot's side, as the atom's JVM recorded it, in that
+      // cycle still (the world waited for the acknowledgement before the next readings).
+      long cycle = d.thresholdNanos() / PERIOD_NANOS;
+      String robot = DistributedCrawler.robotName(atom);
+      assertThat(first.loop)
+          .contains(
+              String.format(
+                  "{\"cycle\":%d,\"meta\":\"%s\",\"event\":\"requested\",\"robot\":\"%s\","
+                      + "\"version\":%d,",
+                  cycle, DistributedMeta.NAME, robot, d.version()))
+          .contains(
+              String.format(
+                  "{\"cycle\":%d,\"event\":\"applied\",\"robot\":\"%s\",\"version\":%d,",
+                  cycle, robot, d.version()));
     }
+    assertThat(first.loopFigures)
+        .contains(
+            new Summary.Entry(
+                "meta level",
+                "in the world's JVM, apart from every atom's, over the broker; in lock step, one"
+                    + " cycle behind"),
+            new Summary.Entry("requests", "2 (2 applied, 0 refused, 0 held back by its damping)"),
+            new Summary.Entry("notified to applied", "0 cycles (median), 0 at most (p99 0)"));
+    // Every notification the robots sent (each JVM counts its own) reached the meta; its filter
+    // let through the two threshold meta-events only.
+    assertThat(first.loopFigures)
+        .filteredOn(e -> e.name().equals("notifications"))
+        .singleElement()
+        .satisfies(
+            e -> assertThat(e.value()).matches("(\\d+) sent, \\1 received, 2 through its filter"));
     // Seen: about 4 cm towards -x in 1 s, the last third of it with the gentler stroke.
     assertThat(first.start.x() - first.end.x()).isGreaterThan(0.02);
     // The world's lock step holds the meta too: the same trace, journal included, twice.
@@ -86,6 +118,7 @@ class DistributedTest {
         .as("missed cycles: %d, then %d", first.missed, second.missed)
         .isEqualTo(first.trace);
     assertThat(second.decisions).isEqualTo(first.decisions);
+    assertThat(second.loop).isEqualTo(first.loop);
   }
 
   @Test
@@ -186,6 +219,8 @@ class DistributedTest {
   /** What a test looks at of one run. */
   private record Run(
       String trace,
+      String loop,
+      List<Summary.Entry> loopFigures,
       List<ProcessHandle> children,
       List<DistributedWire.Joined> joined,
       List<String> taken,
@@ -197,7 +232,10 @@ class DistributedTest {
       Vec3 end) {}
 
   /** A run of {@code cycles} cycles, its trace kept with the notes of its journal. */
-  private static Run run(Distributed example, RunSettings settings, int cycles) {
+  private static Run run(Distributed example, RunSettings settings, int cycles, Path loopDir)
+      throws IOException {
+    java.nio.file.Files.createDirectories(loopDir);
+    List<Summary.Entry> loopFigures;
     StringWriter trace = new StringWriter();
     Map<Integer, DistributedMeta.Decision> decisions = new TreeMap<>();
     Map<Integer, Boolean> applied = new TreeMap<>();
@@ -217,6 +255,7 @@ class DistributedTest {
       crew = (DistributedCrew) example.start(sim, settings, journal(sim, new ArrayList<>()));
       try {
         sim.runCycles(cycles);
+        loopFigures = crew.finish(loopDir);
         missed = crew.missedCycles();
         end = centre(sim);
         taken = crew.metaLevel().baseLevelEntities();
@@ -231,6 +270,8 @@ class DistributedTest {
     }
     return new Run(
         trace.toString(),
+        java.nio.file.Files.readString(loopDir.resolve(Reflection.LOOP)),
+        loopFigures,
         crew.processes(),
         crew.joined(),
         taken,
