@@ -151,13 +151,32 @@ class DistributedTest {
   }
 
   @Test
-  void metaRemoteIsRefusedNamingTheOption(@TempDir Path dir) {
+  void metaRemoteIsAUsageErrorSayingTheMetaIsApartAlready(@TempDir Path dir) {
     RunSettings settings = settings(dir, 2).withMeta(RunSettings.MetaPlace.REMOTE);
-
     assertThatThrownBy(() -> new Distributed().scene(settings))
         .isInstanceOf(IllegalArgumentException.class)
-        .hasMessageStartingWith("--meta remote: ")
-        .hasMessageContaining("in the world's JVM");
+        .hasMessageStartingWith("--meta remote: ");
+    ByteArrayOutputStream out = new ByteArrayOutputStream();
+    ByteArrayOutputStream err = new ByteArrayOutputStream();
+
+    int status =
+        Armgals.execute(
+            Catalog.of(List.of(new Distributed())),
+            new PrintStream(out, true, StandardCharsets.UTF_8),
+            new PrintStream(err, true, StandardCharsets.UTF_8),
+            "run",
+            "distributed",
+            "--meta",
+            "remote",
+            "--out",
+            dir.resolve("run").toString());
+
+    assertThat(status).isEqualTo(Armgals.USAGE);
+    assertThat(err.toString(StandardCharsets.UTF_8).strip())
+        .isEqualTo(
+            "armgals: --meta remote: 'distributed' runs its meta level in the world's JVM, apart"
+                + " from every atom's JVM already; leave --meta out");
+    assertThat(dir.resolve("run")).doesNotExist(); // refused before anything started
   }
 
   @Test
