@@ -473,6 +473,14 @@ final class DistributedCrew implements Crew {
     for (DistributedAtomProcess p : processes) {
       p.close();
     }
+    // A run not finished (interrupted, or a test's) leaves no side of the loop behind.
+    for (Path file : loopFiles) {
+      try {
+        java.nio.file.Files.deleteIfExists(file);
+      } catch (IOException e) {
+        throw new UncheckedIOException("cannot delete " + file, e);
+      }
+    }
     DistributedMetaLevel level = metaLevel;
     if (level != null) {
       level.close();

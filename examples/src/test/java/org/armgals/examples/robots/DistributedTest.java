@@ -148,6 +148,11 @@ class DistributedTest {
       }
       assertThat(crew.processes()).noneMatch(ProcessHandle::isAlive);
     }
+    // Unfinished, the run leaves the atoms' logs only: no side of the loop's record.
+    try (var files = java.nio.file.Files.list(dir)) {
+      assertThat(files.map(f -> f.getFileName().toString()))
+          .containsExactlyInAnyOrder("atom-1.log", "atom-2.log");
+    }
   }
 
   @Test
