@@ -2,18 +2,22 @@ package org.armgals.examples.robots;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
 import org.armgals.active.JmsTransport;
 import org.armgals.active.ShutdownMode;
+import org.armgals.examples.sim.LoopRecord;
 import org.armgals.gals.Emission;
 import org.armgals.gals.Island;
 import org.armgals.kernel.Kernel;
 import org.armgals.kernel.KernelOptions;
+import org.armgals.kernel.NotificationPolicy;
+import org.armgals.kernel.ReflectionEvent;
 import org.armgals.kernel.StructuralMeta;
-import org.armgals.maam.RobotKind;
+import org.armgals.kernel.spi.ReflectionListener;
 import org.armgals.representation.p.PState;
 
 /**
@@ -23,12 +27,17 @@ import org.armgals.representation.p.PState;
  *
  * <p>The robot is a kernel entity of the atom's runtime: the world sends it its readings as
  * stimuli, which its {@code receive} schema feeds to the body at each release, and its {@code
- * report} schema sends the world the commands of the cycle just run, if they answer new readings.
- * It tells the world it has joined once started.
+ * report} schema sends the world the commands of the cycle before, if they answer new readings. It
+ * is started with no behavioral meta of its own: its runtime registers it under its name in the
+ * broker's name service, and the meta level, in the world's JVM, takes it from there; it notifies
+ * its states (the battery's fraction and its swing only) and the threshold meta-event {@link
+ * DistributedCrawler#LOW_BATTERY}. The atom's kernel tells time in the world's time of the last
+ * readings, which its notifications carry. It tells the world it has joined once started.
  *
  * <p>Arguments: atom id, index in the chain, atoms in the chain, broker URL, topic prefix, the
- * world's address (runtime and id), the island's period in nanoseconds. The broker's credentials,
- * if any, come in the environment ({@value #USER}, {@value #PASSWORD}).
+ * world's address (runtime and id), the island's period in nanoseconds, the battery's capacity in
+ * J, the file its robot's side of the reflective loop's record goes to when it leaves. The broker's
+ * credentials, if any, come in the environment ({@value #USER}, {@value #PASSWORD}).
  */
 final class DistributedAtomMain {
   static final String USER = "ARMGALS_BROKER_USER";
@@ -37,7 +46,15 @@ final class DistributedAtomMain {
   private DistributedAtomMain() {}
 
   static List<String> args(
-      int atom, int index, int count, String url, String prefix, Address world, Duration period) {
+      int atom,
+      int index,
+      int count,
+      String url,
+      String prefix,
+      Address world,
+      Duration period,
+      double capacity,
+      Path loop) {
     return List.of(
         Integer.toString(atom),
         Integer.toString(index),
@@ -46,13 +63,15 @@ final class DistributedAtomMain {
         prefix,
         world.runtime(),
         Long.toString(world.id()),
-        Long.toString(period.toNanos()));
+        Long.toString(period.toNanos()),
+        Double.toString(capacity),
+        loop.toAbsolutePath().toString());
   }
 
   public static void main(String[] args) throws IOException {
-    if (args.length != 8) {
+    if (args.length != 10) {
       System.err.println(
-          "expected 8 arguments (see DistributedAtomMain's javadoc), got " + args.length);
+          "expected 10 arguments (see DistributedAtomMain's javadoc), got " + args.length);
       System.exit(2);
     }
     int atom = Integer.parseInt(args[0]);
@@ -62,6 +81,8 @@ final class DistributedAtomMain {
     String prefix = args[4];
     Address world = new Address(args[5], Long.parseLong(args[6]));
     Duration period = Duration.ofNanos(Long.parseLong(args[7]));
+    double capacity = Double.parseDouble(args[8]);
+    Path loopFile = Path.of(args[9]);
     long pid = ProcessHandle.current().pid();
     String name = "atom" + atom + "-" + pid;
     String user = System.getenv(USER);
@@ -74,27 +95,52 @@ final class DistributedAtomMain {
       String password = System.getenv(PASSWORD);
       builder.broker(url, user, password == null ? "" : password);
     }
+    DistributedRemoteBody body = new DistributedRemoteBody(atom);
+    Notified notified = new Notified(DistributedCrawler.robotName(atom));
+    // The robot's side of the loop, at the world's cycle of the last readings.
+    LoopRecord loop =
+        new LoopRecord(
+                period.toNanos(), () -> Math.max(0, body.worldTimeNanos()) / period.toNanos())
+            .watch(DistributedCrawler.robotName(atom));
     try (JmsTransport transport = builder.build()) {
       ActiveRuntime runtime =
           ActiveRuntime.builder().name(name).workers(1).jmx(false).transport(transport).build();
       try (Kernel kernel =
               org.armgals.kernel.StructuralMeta.bootstrap(
-                  runtime, KernelOptions.defaults().withJmx(false));
+                  runtime,
+                  KernelOptions.defaults()
+                      .withJmx(false)
+                      .withTimeSource(() -> Math.max(0, body.worldTimeNanos()))
+                      .withListener(
+                          event -> {
+                            notified.on(event);
+                            loop.on(event);
+                          }));
           Island island =
               Island.builder("atom" + atom, runtime).period(period).jmx(false).build()) {
-        DistributedRemoteBody body = new DistributedRemoteBody(atom);
         DistributedCrawler[] self = new DistributedCrawler[1];
         DistributedCrawler robot =
             new DistributedCrawler(
                 body,
                 index,
                 count,
+                capacity,
+                notified::last,
                 payload ->
                     runtime.ref(world).send(new Emission(self[0].address(), world, payload)));
         self[0] = robot;
-        StructuralMeta<PState> kind =
-            RobotKind.define(kernel, "DistributedCrawler", robot.observation());
-        robot.start(island, kind, kernel.basicBehavioralMeta(), island.entityOptions());
+        StructuralMeta<PState> kind = DistributedCrawler.kind(kernel);
+        // No meta of its own: the meta level, in the world's JVM, takes it by its name.
+        robot.start(
+            island,
+            kind,
+            island
+                .entityOptions()
+                .withNotification(
+                    NotificationPolicy.statesOnly()
+                        .observing(DistributedCrawler.FRACTION, DistributedCrawler.SWING)
+                        .watching(DistributedCrawler.LOW_BATTERY)));
+        transport.register(robot.name(), robot.address());
         runtime
             .ref(world)
             .send(
@@ -109,11 +155,45 @@ final class DistributedAtomMain {
         while (in.read() != -1) {
           // The world says nothing on this pipe: its end is the signal to leave.
         }
+        loop.write(loopFile);
         System.out.println(
-            "atom " + atom + " leaves after " + robot.cycles() + " cycles, " + island.stats());
+            "atom "
+                + atom
+                + " leaves after "
+                + robot.cycles()
+                + " cycles, "
+                + notified.last()
+                + " notifications, request "
+                + robot.appliedVersion()
+                + " applied last, "
+                + island.stats());
       } finally {
         runtime.shutdown(ShutdownMode.CANCEL, Duration.ofSeconds(5));
       }
+    }
+  }
+
+  /**
+   * The number of the last notification the robot's entity sent its behavioral meta, as the atom's
+   * kernel tells it: on the robot's thread, during its cycle.
+   */
+  private static final class Notified implements ReflectionListener {
+    private final String robot;
+    private volatile long last;
+
+    Notified(String robot) {
+      this.robot = robot;
+    }
+
+    @Override
+    public void on(ReflectionEvent event) {
+      if (event instanceof ReflectionEvent.Notified n && n.entity().equals(robot)) {
+        last = n.notification().seq();
+      }
+    }
+
+    long last() {
+      return last;
     }
   }
 }

@@ -12,8 +12,15 @@ import java.net.URI;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
+import java.util.NavigableMap;
+import java.util.Optional;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.Collectors;
 import org.armgals.active.ActiveObject;
 import org.armgals.active.ActiveRuntime;
@@ -22,9 +29,12 @@ import org.armgals.active.EmbeddedBroker;
 import org.armgals.active.JmsTransport;
 import org.armgals.active.ShutdownMode;
 import org.armgals.active.TimeSource;
+import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
 import org.armgals.examples.sim.Crew;
 import org.armgals.examples.sim.Journal;
+import org.armgals.examples.sim.LoopRecord;
+import org.armgals.examples.sim.Reflection;
 import org.armgals.kernel.Kernel;
 import org.armgals.kernel.Stimulus;
 import org.armgals.maam.sim.Simulation;
@@ -36,14 +46,16 @@ import org.armgals.maam.spi.Tilt;
 import org.jspecify.annotations.Nullable;
 
 /**
- * A run of {@link Distributed}: the broker (embedded, unless given), the world's runtime and
- * mailbox, an atom JVM per atom, and a controller per atom that trades readings for commands with
- * it. Built and used on the thread that runs the simulation.
+ * A run of {@link Distributed}: the broker (embedded, unless given), the world's runtime, mailbox
+ * and meta level ({@link DistributedMetaLevel}), an atom JVM per atom, and a controller per atom
+ * that trades readings for commands with it. Built and used on the thread that runs the simulation.
  *
  * <p>Each cycle, the first controller to run sends every atom its readings; then each atom's
  * controller waits for the commands that answer them, at most its patience (lock step: generous;
  * paced to real time: one period), and applies the latest commands it has. A cycle whose answer did
- * not come in time is a missed cycle of that atom.
+ * not come in time is a missed cycle of that atom. In lock step the first controller also waits,
+ * before it sends the readings, for the meta level to keep up with each atom ({@link
+ * DistributedMetaLevel#keepUp}), and journals the requests that apply from this cycle on.
  */
 final class DistributedCrew implements Crew {
   /** How long the atoms' JVMs have to start and join. */
@@ -58,22 +70,40 @@ final class DistributedCrew implements Crew {
   /** How long the probe of an external broker waits for its host to answer. */
   private static final int PROBE_TIMEOUT_MILLIS = 3000;
 
+  private static final AtomicInteger RUNS = new AtomicInteger();
+
+  private final TimeSource time = TimeSource.system();
   private final Simulation sim;
   private final Duration patience;
+  private final boolean lockStep;
+  private final Journal journal;
+  private final RunSettings settings;
+  private final LoopRecord loop;
+  private final List<Path> loopFiles = new ArrayList<>();
+  private boolean finished;
   private final List<DistributedAtomProcess> processes = new ArrayList<>();
   private final List<DistributedWire.Joined> joined = new ArrayList<>();
+  private final Map<Integer, Long> missedOf = new TreeMap<>();
+  private final Map<Integer, NavigableMap<Long, Double>> strokes = new TreeMap<>();
+  private final Set<Integer> gone = new HashSet<>();
   private @Nullable EmbeddedBroker broker;
   private @Nullable JmsTransport transport;
   private @Nullable ActiveRuntime runtime;
   private @Nullable DistributedWorld world;
   private @Nullable ActiveObject<DistributedWorld> mailbox;
+  private @Nullable DistributedMetaLevel metaLevel;
   private long published = -1;
   private long missed;
   private long awaited;
 
-  private DistributedCrew(Simulation sim, Duration patience) {
+  private DistributedCrew(
+      Simulation sim, Duration patience, RunSettings settings, Journal journal) {
     this.sim = sim;
     this.patience = patience;
+    this.settings = settings;
+    this.lockStep = !settings.realTime();
+    this.journal = journal;
+    this.loop = new LoopRecord(settings.period().toNanos(), sim::cycle);
   }
 
   /**
@@ -81,7 +111,8 @@ final class DistributedCrew implements Crew {
    * waits until every atom has joined, and installs the controllers.
    *
    * @param url an external broker, or null for an embedded one
-   * @param logs the directory of the atoms' logs
+   * @param settings the run's: the directory of the atoms' logs ({@code out}), the period, lock
+   *     step or real time
    * @throws IllegalArgumentException the external broker cannot be reached, saying what to do
    * @throws IllegalStateException an atom's JVM did not start or join, naming it; nothing is left
    *     running
@@ -91,14 +122,16 @@ final class DistributedCrew implements Crew {
       @Nullable String url,
       String user,
       String password,
-      Path logs,
-      Duration period,
-      boolean realTime,
+      RunSettings settings,
       Journal journal) {
     requireNonNull(sim, "sim");
-    DistributedCrew crew = new DistributedCrew(sim, realTime ? period : LOCKSTEP_WAIT);
+    requireNonNull(settings, "settings");
+    requireNonNull(journal, "journal");
+    Duration period = settings.period();
+    DistributedCrew crew =
+        new DistributedCrew(sim, settings.realTime() ? period : LOCKSTEP_WAIT, settings, journal);
     try {
-      crew.open(url, user, password, logs, period, journal);
+      crew.open(url, user, password, settings.out(), period);
       return crew;
     } catch (RuntimeException | Error e) {
       crew.close();
@@ -107,12 +140,7 @@ final class DistributedCrew implements Crew {
   }
 
   private void open(
-      @Nullable String url,
-      String givenUser,
-      String givenPassword,
-      Path logs,
-      Duration period,
-      Journal journal) {
+      @Nullable String url, String givenUser, String givenPassword, Path logs, Duration period) {
     String brokerUrl;
     String user = givenUser;
     String password = givenPassword;
@@ -160,23 +188,29 @@ final class DistributedCrew implements Crew {
     }
     ActiveRuntime r =
         ActiveRuntime.builder()
-            .name("world-" + pid)
+            .name("world-" + pid + "-" + RUNS.incrementAndGet())
             .workers(1)
             .jmx(false)
             .transport(transport)
             .build();
     runtime = r;
-    DistributedWorld w = new DistributedWorld(TimeSource.system());
+    DistributedWorld w = new DistributedWorld(time);
     world = w;
     ActiveObject<DistributedWorld> m = r.spawn(w);
     mailbox = m;
+    DistributedMetaLevel level = DistributedMetaLevel.open(r, period.toNanos(), time, loop);
+    metaLevel = level;
+    double capacity = sim.scene().params().batteryCapacity();
     List<Integer> ids = sim.atomIds();
     for (int i = 0; i < ids.size(); i++) {
       int atom = ids.get(i);
+      Path loopFile = logs.resolve(".atom-" + atom + "-loop.jsonl");
+      loopFiles.add(loopFile);
       DistributedAtomProcess p =
           DistributedAtomProcess.start(
               atom,
-              DistributedAtomMain.args(atom, i, ids.size(), brokerUrl, prefix, m.address(), period),
+              DistributedAtomMain.args(
+                  atom, i, ids.size(), brokerUrl, prefix, m.address(), period, capacity, loopFile),
               logs.resolve("atom-" + atom + ".log"),
               user,
               password);
@@ -186,8 +220,17 @@ final class DistributedCrew implements Crew {
     for (DistributedAtomProcess p : processes) {
       DistributedWire.Joined j = awaitJoined(w, p);
       joined.add(j);
+      try {
+        level.take(
+            j.atom(), requireNonNull(transport, "transport"), JOIN, () -> w.hasEnded(j.atom()));
+      } catch (RuntimeException e) {
+        throw new IllegalStateException(
+            p + ": " + e.getMessage() + "; its last lines:\n" + p.tail(), e);
+      }
       // No pid here: a run in lock step leaves the same trace every time.
-      journal.note(j.atom(), "its robot joined from a JVM of its own");
+      journal.note(
+          j.atom(),
+          "its robot joined from a JVM of its own; the meta level in the world's JVM takes it");
     }
     for (int atom : ids) {
       sim.setController(atom, (body, cycle) -> control(atom, cycle));
@@ -215,6 +258,7 @@ final class DistributedCrew implements Crew {
   private void control(int atom, long cycle) {
     DistributedWorld w = requireNonNull(world, "world");
     if (cycle != published) {
+      keepUp(w);
       publish(cycle);
       published = cycle;
     }
@@ -228,10 +272,46 @@ final class DistributedCrew implements Crew {
     awaited++;
     if (commands == null || commands.cycle() < cycle) {
       missed++;
+      missedOf.merge(atom, 1L, Long::sum);
     }
     if (commands != null) {
       apply(sim.body(atom), commands);
+      strokes
+          .computeIfAbsent(atom, a -> new TreeMap<>())
+          .put(commands.timeNanos(), stroke(commands));
     }
+    if (w.hasEnded(atom) && gone.add(atom)) {
+      journal.note(atom, "its JVM ended: the world goes on without its robot");
+    }
+  }
+
+  /**
+   * Before the readings of a cycle: in lock step, waits until the meta level has handled every
+   * notification of the readings before and each atom has acknowledged its requests; then journals
+   * the requests that apply from now on. Atoms whose process ended are not waited for.
+   */
+  private void keepUp(DistributedWorld w) {
+    DistributedMetaLevel level = requireNonNull(metaLevel, "metaLevel");
+    if (lockStep) {
+      for (DistributedWire.Joined j : joined) {
+        int atom = j.atom();
+        DistributedWire.Commands last = w.latest(atom);
+        long deadline = time.nanoTime() + patience.toNanos();
+        level.keepUp(atom, last == null ? 0 : last.notified(), deadline, () -> w.hasEnded(atom));
+      }
+    }
+    level.journal(sim.timeNanos(), journal);
+  }
+
+  /** How far from their cones' axes the commands drive the legs, at most, rad. */
+  private static double stroke(DistributedWire.Commands commands) {
+    double most = 0;
+    for (double elevation : commands.elevations()) {
+      if (!Double.isNaN(elevation)) {
+        most = Math.max(most, elevation);
+      }
+    }
+    return most;
   }
 
   private void publish(long cycle) {
@@ -286,6 +366,50 @@ final class DistributedCrew implements Crew {
     return processes.stream().map(DistributedAtomProcess::handle).toList();
   }
 
+  /** The meta level, in the world's JVM. */
+  DistributedMetaLevel metaLevel() {
+    return requireNonNull(metaLevel, "metaLevel");
+  }
+
+  /** The cycles whose answer from atom {@code atom} came too late or not at all. */
+  long missedCycles(int atom) {
+    return missedOf.getOrDefault(atom, 0L);
+  }
+
+  /**
+   * The strokes atom {@code atom}'s commands drove its legs to, as the world received them: by the
+   * world time of the readings they answered, how far from their cones' axes they went, rad.
+   */
+  NavigableMap<Long, Double> strokes(int atom) {
+    return java.util.Collections.unmodifiableNavigableMap(
+        strokes.getOrDefault(atom, new TreeMap<>()));
+  }
+
+  /**
+   * After the last cycle: in lock step waits until the meta has handled the notifications of the
+   * last readings, then lets the atoms leave (each writes its robot's side of the loop's record as
+   * it does) and merges every side into {@code dir}'s {@value Reflection#LOOP}.
+   *
+   * @throws IllegalStateException it finished already
+   */
+  @Override
+  public List<Summary.Entry> finish(Path dir) {
+    requireNonNull(dir, "dir");
+    if (finished) {
+      throw new IllegalStateException("the loop of this run is finished already");
+    }
+    finished = true;
+    keepUp(requireNonNull(world, "world"));
+    processes.forEach(DistributedAtomProcess::leave);
+    processes.forEach(DistributedAtomProcess::close);
+    return LoopRecord.finish(
+        dir,
+        loop,
+        loopFiles,
+        settings,
+        "in the world's JVM, apart from every atom's, over the broker");
+  }
+
   @Override
   public long missedCycles() {
     return missed;
@@ -293,15 +417,51 @@ final class DistributedCrew implements Crew {
 
   @Override
   public List<Summary.Entry> figures() {
-    return List.of(
+    List<Summary.Entry> figures = new ArrayList<>();
+    figures.add(
         new Summary.Entry(
             "atom processes",
-            joined.stream().map(j -> Long.toString(j.pid())).collect(Collectors.joining(", "))),
-        new Summary.Entry("late answers", missed + " of " + awaited + " (atoms × cycles)"),
+            joined.stream().map(j -> Long.toString(j.pid())).collect(Collectors.joining(", "))));
+    figures.add(new Summary.Entry("late answers", missed + " of " + awaited + " (atoms × cycles)"));
+    figures.add(
         new Summary.Entry(
             "world waits",
             String.format(
                 Locale.ROOT, "up to %d ms per cycle for each atom", patience.toMillis())));
+    DistributedMetaLevel level = metaLevel;
+    if (level == null) {
+      return figures;
+    }
+    figures.addAll(level.figures(lockStep, patience));
+    for (DistributedWire.Joined j : joined) {
+      figures.add(
+          new Summary.Entry(
+              DistributedCrawler.robotName(j.atom()) + "'s stroke", strokeFigure(level, j.atom())));
+    }
+    return figures;
+  }
+
+  /** What the world saw of an atom's stroke, and the request that changed it. */
+  private String strokeFigure(DistributedMetaLevel level, int atom) {
+    NavigableMap<Long, Double> seen = strokes(atom);
+    Optional<DistributedMeta.Decision> decision = level.decision(atom);
+    if (decision.isEmpty()) {
+      return String.format(
+          Locale.ROOT, "%.2f rad throughout (its battery stayed above half)", most(seen.values()));
+    }
+    DistributedMeta.Decision d = decision.get();
+    return String.format(
+        Locale.ROOT,
+        "%.2f rad, then %.2f rad from %.2f s (asked for on its battery at %.1f%% at %.2f s)",
+        most(seen.headMap(d.fromNanos(), false).values()),
+        most(seen.tailMap(d.fromNanos(), true).values()),
+        d.fromNanos() / 1e9,
+        100 * d.fraction(),
+        d.thresholdNanos() / 1e9);
+  }
+
+  private static double most(java.util.Collection<Double> strokes) {
+    return strokes.stream().mapToDouble(Double::doubleValue).max().orElse(Double.NaN);
   }
 
   /** Stops the atoms' JVMs (and waits for them), the world's runtime, the transport, the broker. */
@@ -312,6 +472,18 @@ final class DistributedCrew implements Crew {
     }
     for (DistributedAtomProcess p : processes) {
       p.close();
+    }
+    // A run not finished (interrupted, or a test's) leaves no side of the loop behind.
+    for (Path file : loopFiles) {
+      try {
+        java.nio.file.Files.deleteIfExists(file);
+      } catch (IOException e) {
+        throw new UncheckedIOException("cannot delete " + file, e);
+      }
+    }
+    DistributedMetaLevel level = metaLevel;
+    if (level != null) {
+      level.close();
     }
     ActiveRuntime r = runtime;
     if (r != null) {

@@ -14,8 +14,14 @@ final class DistributedGait {
   /** One stroke and return, in seconds of simulated time. */
   static final double PERIOD = 0.5;
 
-  /** How far a leg swings from its cone's axis, rad (the cone allows 30°, 0.52). */
+  /**
+   * How far a leg swings from its cone's axis at first, rad: the amplitude of its stroke (the cone
+   * allows 30°, {@link #MAX_SWING}).
+   */
   static final double SWING = 0.45;
+
+  /** The widest swing a leg's cone allows, rad (30°). */
+  static final double MAX_SWING = Math.PI / 6;
 
   /** Where the front of the stroke is, as an azimuth, for the {@code -z} leg. */
   static final double FRONT_MZ = Math.PI;
@@ -31,13 +37,29 @@ final class DistributedGait {
     return phase - Math.floor(phase);
   }
 
-  /** Where a leg whose stroke starts at azimuth {@code front} points at {@code phase}. */
-  static LegAngles leg(double phase, double front) {
+  /**
+   * Where a leg whose stroke starts at azimuth {@code front} and swings {@code swing} rad from its
+   * cone's axis points at {@code phase}.
+   */
+  static LegAngles leg(double phase, double front, double swing) {
     if (phase < 0.5) {
-      double along = SWING * (1 - 4 * phase); // from +SWING (front) to -SWING (back)
+      double along = swing * (1 - 4 * phase); // from +swing (front) to -swing (back)
       return new LegAngles(Math.abs(along), wrap(along >= 0 ? front : front + Math.PI));
     }
-    return new LegAngles(SWING, wrap(front + Math.PI + 2 * Math.PI * (phase - 0.5)));
+    return new LegAngles(swing, wrap(front + Math.PI + 2 * Math.PI * (phase - 0.5)));
+  }
+
+  /**
+   * Checks that {@code swing} is a stroke's amplitude a leg's cone allows.
+   *
+   * @throws IllegalArgumentException it is not in (0, {@link #MAX_SWING}], naming it
+   */
+  static double checkSwing(double swing) {
+    if (!(swing > 0 && swing <= MAX_SWING)) {
+      throw new IllegalArgumentException(
+          "swing " + swing + " rad: expected in (0, " + MAX_SWING + "] (a leg's cone is 30°)");
+    }
+    return swing;
   }
 
   private static double wrap(double angle) {

@@ -23,8 +23,8 @@ import org.jspecify.annotations.Nullable;
  * answer.
  *
  * <p>Threading: used by the thread of the robot's entity only (its reactions run one at a time);
- * {@link #feed} and {@link #takeCommands} are called from the entity's link reaction, between two
- * cycles of the robot.
+ * {@link #feed} and {@link #takeCommands} are called from the robot's first and last modules.
+ * {@link #worldTimeNanos} on any thread (the atom's kernel reads it as its time).
  */
 final class DistributedRemoteBody implements Body {
   /** The world's simulated time of the readings, in ns; -1 before the first readings. */
@@ -37,13 +37,21 @@ final class DistributedRemoteBody implements Body {
   private final double[] elevations = new double[6];
   private final double[] azimuths = new double[6];
   private DistributedWire.@Nullable Readings readings;
-  private DistributedWire.@Nullable Commands commands;
+  private volatile long worldTime = -1;
+  private DistributedWire.@Nullable Readings answer;
+  private List<Double> answerElevations = List.of();
+  private List<Double> answerAzimuths = List.of();
   private long answered = -1;
   private boolean commanded;
 
   DistributedRemoteBody(int atom) {
     this.atom = atom;
     clearTargets();
+  }
+
+  /** The atom's id in the scene. */
+  int atom() {
+    return atom;
   }
 
   @Override
@@ -67,14 +75,27 @@ final class DistributedRemoteBody implements Body {
     DistributedWire.Readings last = readings;
     if (last == null || next.cycle() > last.cycle()) {
       readings = next;
+      worldTime = next.timeNanos();
     }
   }
 
-  /** The commands of the last cycle that answered new readings, once; null if none. */
-  DistributedWire.@Nullable Commands takeCommands() {
-    DistributedWire.Commands c = commands;
-    commands = null;
-    return c;
+  /** The world's simulated time of the last readings fed, in ns; -1 before any. */
+  long worldTimeNanos() {
+    return worldTime;
+  }
+
+  /**
+   * The commands of the last cycle that answered new readings, once, telling that the robot had
+   * sent its meta the notifications up to {@code notified}; null if there are none to send.
+   */
+  DistributedWire.@Nullable Commands takeCommands(long notified) {
+    DistributedWire.Readings r = answer;
+    if (r == null) {
+      return null;
+    }
+    answer = null;
+    return new DistributedWire.Commands(
+        atom, r.cycle(), r.timeNanos(), answerElevations, answerAzimuths, notified);
   }
 
   @Override
@@ -126,7 +147,9 @@ final class DistributedRemoteBody implements Body {
   public void endCycle() {
     DistributedWire.Readings r = readings;
     if (commanded && r != null && r.cycle() > answered) {
-      commands = new DistributedWire.Commands(atom, r.cycle(), list(elevations), list(azimuths));
+      answer = r;
+      answerElevations = list(elevations);
+      answerAzimuths = list(azimuths);
       answered = r.cycle();
     }
     clearTargets();

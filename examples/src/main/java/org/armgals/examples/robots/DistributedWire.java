@@ -65,12 +65,28 @@ final class DistributedWire {
   /**
    * The leg targets atom {@code atom}'s robot commanded from the readings of world cycle {@code
    * cycle}; legs in {@link org.armgals.maam.spi.Leg} order, {@code NaN} for a leg not commanded.
+   *
+   * @param timeNanos the world's simulated time of the readings they answer
+   * @param notified the sequence number of the last notification the robot's entity had sent its
+   *     behavioral meta before the cycle that computed these commands (0: none): every notification
+   *     of the readings before cycle {@code cycle}, and the world's lock step waits until its meta
+   *     has handled them
    */
-  public record Commands(int atom, long cycle, List<Double> elevations, List<Double> azimuths) {
+  public record Commands(
+      int atom,
+      long cycle,
+      long timeNanos,
+      List<Double> elevations,
+      List<Double> azimuths,
+      long notified) {
     /** Checks that there is a value per leg. */
     public Commands {
       elevations = perLeg(elevations, "elevations");
       azimuths = perLeg(azimuths, "azimuths");
+      if (notified < 0) {
+        throw new IllegalArgumentException(
+            "notified " + notified + ": expected a sequence number >= 0");
+      }
     }
   }
 

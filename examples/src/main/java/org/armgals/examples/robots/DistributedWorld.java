@@ -94,6 +94,11 @@ final class DistributedWorld implements EventProcessor {
     return commands.get(atom);
   }
 
+  /** The latest commands atom {@code atom} sent; null if none yet. */
+  synchronized DistributedWire.@Nullable Commands latest(int atom) {
+    return commands.get(atom);
+  }
+
   private boolean answered(int atom, long cycle) {
     DistributedWire.Commands c = commands.get(atom);
     return c != null && c.cycle() >= cycle;

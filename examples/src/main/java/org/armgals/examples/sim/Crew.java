@@ -33,6 +33,16 @@ public interface Crew extends AutoCloseable {
     return java.util.Optional.empty();
   }
 
+  /**
+   * After the last cycle: records the reflective loop into {@code dir} ({@value Reflection#LOOP})
+   * and answers the summary's lines of it; the default finishes the {@link #reflection()}, if any.
+   * A crew whose robots and meta level live in JVMs it starts itself merges their records ({@link
+   * LoopRecord}).
+   */
+  default List<Summary.Entry> finish(java.nio.file.Path dir) {
+    return reflection().map(r -> r.finish(dir)).orElse(List.of());
+  }
+
   /** Stops what the crew started (islands, runtimes, processes); the default does nothing. */
   @Override
   default void close() {}

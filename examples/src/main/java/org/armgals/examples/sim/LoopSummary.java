@@ -29,6 +29,27 @@ record LoopSummary(List<Summary.Entry> entries) {
       boolean remote,
       long overruns,
       List<Long> latencyNanos) {
+    return of(
+        loop,
+        hasMeta,
+        settings,
+        remote ? "remote, in a JVM of its own over the broker" : "local, in the robots' JVM",
+        overruns,
+        latencyNanos);
+  }
+
+  /**
+   * @param place where the meta level ran, as the summary says it
+   * @param overruns the adaptation points that overran their cycle's time budget (real time, so not
+   *     in the record)
+   */
+  static LoopSummary of(
+      List<Map<String, Object>> loop,
+      boolean hasMeta,
+      RunSettings settings,
+      String place,
+      long overruns,
+      List<Long> latencyNanos) {
     List<Summary.Entry> entries = new ArrayList<>();
     if (!hasMeta) {
       entries.add(new Summary.Entry("meta level", "none"));
@@ -37,12 +58,13 @@ record LoopSummary(List<Summary.Entry> entries) {
     entries.add(
         new Summary.Entry(
             "meta level",
-            (remote ? "remote, in a JVM of its own over the broker" : "local, in the robots' JVM")
+            place
                 + (settings.realTime()
                     ? "; free (the robots never wait for it)"
                     : "; in lock step, one cycle behind")));
     Map<String, Integer> count = new HashMap<>();
     Map<String, Long> requestedAt = new HashMap<>();
+    Map<String, Long> answeredAt = new HashMap<>();
     List<Long> latencies = new ArrayList<>();
     int passed = 0;
     int changes = 0;
@@ -60,12 +82,8 @@ record LoopSummary(List<Summary.Entry> entries) {
           }
         }
         case "requested" -> requestedAt.put(key, cycle);
-        case "applied", "refused" -> {
-          Long at = requestedAt.get(key);
-          if (at != null) {
-            latencies.add(cycle - at);
-          }
-        }
+        // Both sides' records of one cycle: the robots' come first, so an answer may precede.
+        case "applied", "refused" -> answeredAt.putIfAbsent(key, cycle);
         case "meta-lost", "free" -> {
           if (lost == null) {
             lost = "at cycle " + cycle + " (" + r.getOrDefault("reason", r.get("runtime")) + ")";
@@ -74,6 +92,13 @@ record LoopSummary(List<Summary.Entry> entries) {
         default -> {}
       }
     }
+    requestedAt.forEach(
+        (key, at) -> {
+          Long answered = answeredAt.get(key);
+          if (answered != null) {
+            latencies.add(answered - at);
+          }
+        });
     entries.add(
         new Summary.Entry(
             "notifications",

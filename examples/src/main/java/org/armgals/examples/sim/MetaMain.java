@@ -187,7 +187,7 @@ public final class MetaMain {
     return last;
   }
 
-  private static void writeLoop(Path file, List<LoopRecorder.Line> lines) {
+  static void writeLoop(Path file, List<LoopRecorder.Line> lines) {
     try (Writer w = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
       for (LoopRecorder.Line l : lines) {
         Map<String, Object> record = new LinkedHashMap<>();

@@ -478,7 +478,7 @@ public final class Reflection implements AutoCloseable {
     return figures;
   }
 
-  private static void write(Path file, List<Map<String, Object>> loop) {
+  static void write(Path file, List<Map<String, Object>> loop) {
     try (Writer out = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
       for (Map<String, Object> record : loop) {
         out.write(LoopJson.write(record));

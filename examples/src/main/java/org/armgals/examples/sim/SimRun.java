@@ -132,7 +132,7 @@ final class SimRun {
             crewMissed = crew.missedCycles();
             List<Summary.Entry> loop = new java.util.ArrayList<>();
             if (ran > 0) {
-              crew.reflection().ifPresent(r -> loop.addAll(r.finish(staging.dir())));
+              loop.addAll(crew.finish(staging.dir()));
             }
             figures = new java.util.ArrayList<>(crew.figures());
             figures.addAll(loop);
@@ -207,7 +207,7 @@ final class SimRun {
           sim.runCycle();
         }
         if (loopDir != null && ran > 0) {
-          crew.reflection().ifPresent(r -> r.finish(loopDir));
+          crew.finish(loopDir);
         }
       } finally {
         crew.close();
