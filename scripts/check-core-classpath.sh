@@ -6,8 +6,8 @@
 #  - in-JVM: arm-active alone. At most 5 jars besides armgals' (SLF4J API included), none of
 #    Jakarta Messaging, the Artemis client or server, or netty; scripts/consumer/InJvmUser.java runs
 #    an active object and a filter and finds no jakarta.jms class;
-#  - client: arm-active + artemis-jakarta-client. It holds every jar artemis-jakarta-client brings
-#    on its own (arm-active's exclusions take nothing from it);
+#  - client: arm-active + artemis-jakarta-client. It holds every artifact artemis-jakarta-client
+#    brings on its own (arm-active's exclusions take nothing from it; versions may be mediated);
 #  - embedded: arm-active + artemis-jakarta-client + artemis-server, as docs/user-guide.md says;
 #    scripts/consumer/DistributedUser.java starts an embedded broker, looks a name up over the
 #    network and carries events.
@@ -20,6 +20,9 @@ artemis="$(sed -n 's:.*<artemis.version>\(.*\)</artemis.version>.*:\1:p' "$root/
 work="${CHECK_CORE_DIR:-$(mktemp -d "${TMPDIR:-/tmp}/armgals-check-core.XXXXXX")}"
 repo="$work/repository"
 max_jars=5
+# shellcheck source=java.sh
+source "$root/scripts/java.sh"
+java="$(find_java check-core-classpath)"
 failures=0
 mvn=("$root/mvnw" -B -q -Dmaven.repo.local="$repo" -Dmaven.repo.local.tail="$HOME/.m2/repository")
 
@@ -70,7 +73,7 @@ POM
 
 run() {
   local name="$1" program="$2"
-  if java -cp "$(cat "$work/$name/classpath.txt")" "$root/scripts/consumer/$program.java" \
+  if "$java" --enable-native-access=ALL-UNNAMED -cp "$(cat "$work/$name/classpath.txt")" "$root/scripts/consumer/$program.java" \
     >"$work/$name/run.log" 2>&1; then
     echo "check-core-classpath: $name: $(tail -1 "$work/$name/run.log")"
   else
@@ -96,7 +99,8 @@ if consumer in-jvm "$active"; then
 fi
 
 if consumer client-alone "$client" && consumer client "$active" "$client"; then
-  missing="$(comm -23 "$work/client-alone/deps.txt" "$work/client/deps.txt")"
+  missing="$(comm -23 <(cut -d: -f1,2 "$work/client-alone/deps.txt" | sort -u) \
+    <(cut -d: -f1,2 "$work/client/deps.txt" | sort -u))"
   [[ -z "$missing" ]] || fail "client: arm-active takes from artemis-jakarta-client:" $missing
   echo "check-core-classpath: client: all $(wc -l <"$work/client-alone/deps.txt") jars of artemis-jakarta-client are there"
 fi

@@ -8,6 +8,7 @@ import org.armgals.active.Event;
 import org.armgals.active.EventProcessor;
 import org.armgals.active.jms.EmbeddedBroker;
 import org.armgals.active.jms.JmsTransport;
+import org.jspecify.annotations.Nullable;
 
 /**
  * What a user of arm-active who distributes does, run by scripts/check-core-classpath.sh on the
@@ -16,7 +17,7 @@ import org.armgals.active.jms.JmsTransport;
  * client over the network that looks a name up and sends an event. Exit status 0 if all holds.
  */
 public class DistributedUser {
-  record Ping(int n) implements Event {}
+  record Ping(@Nullable Address sender, Address destination, int n) implements Event {}
 
   public static void main(String[] args) throws Exception {
     int port;
@@ -39,7 +40,7 @@ public class DistributedUser {
       owner.register("sink", sink);
       Address found = client.lookup("sink").getValue(wait);
       for (int i = 0; i < 10; i++) {
-        there.ref(found).send(new Ping(i));
+        there.ref(found).send(new Ping(null, found, i));
       }
       if (!received.await(wait.toSeconds(), TimeUnit.SECONDS)) {
         throw new AssertionError("the sink got " + (10 - received.getCount()) + " of 10 events");

@@ -4,6 +4,7 @@ import java.util.List;
 import java.util.Map;
 import org.armgals.active.ActiveObject;
 import org.armgals.active.ActiveRuntime;
+import org.armgals.active.Address;
 import org.armgals.active.Event;
 import org.armgals.active.EventProcessor;
 import org.armgals.active.Filter;
@@ -15,7 +16,7 @@ import org.armgals.active.ObjectConfig;
  * there, and an active object must run, filters included. Exit status 0 if all holds.
  */
 public class InJvmUser {
-  record Ping(int n) implements Event {}
+  record Ping(Address sender, Address destination, int n) implements Event {}
 
   /** Keeps what it is sent. */
   static final class Counter implements EventProcessor {
@@ -42,7 +43,7 @@ public class InJvmUser {
     try (ActiveRuntime runtime = ActiveRuntime.builder().name("in-jvm-user").build()) {
       ActiveObject<Counter> counter = runtime.spawn(new Counter(), ObjectConfig.asynchronous());
       for (int i = 0; i < 100; i++) {
-        counter.send(new Ping(i));
+        counter.send(new Ping(counter.address(), counter.address(), i));
       }
       int seen = counter.call(c -> c.seen.size()).getValue(Duration.ofSeconds(10));
       if (seen != 100) {
