@@ -13,8 +13,11 @@ public final class BufferFullException extends ActiveException {
     super("buffer of " + object + " is full (capacity " + capacity + "): " + detail);
   }
 
-  /** A full buffer that is not an object's (a transport's outbound queue); says which. */
-  BufferFullException(String message) {
+  /**
+   * A full buffer that is not an object's: a transport's outbound queue; {@code message} says
+   * which.
+   */
+  public BufferFullException(String message) {
     super(message);
   }
 }

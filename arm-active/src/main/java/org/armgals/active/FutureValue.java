@@ -4,6 +4,7 @@ import static java.util.Objects.requireNonNull;
 
 import java.time.Duration;
 import java.util.concurrent.CompletionStage;
+import org.armgals.active.spi.RemoteAnswer;
 import org.jspecify.annotations.Nullable;
 
 /**
@@ -44,6 +45,17 @@ public interface FutureValue<T extends @Nullable Object> extends Future {
    */
   static <T extends @Nullable Object> FutureValue<T> completed(T value) {
     return ValueFuture.completed(value);
+  }
+
+  /**
+   * For transports: a future that the transport completes when the answer of a request it sent to
+   * another runtime comes back. {@code from} names where the answer comes from, in failures; the
+   * waiters' timeouts are read on {@code time}; a waiter receives the answer itself through {@code
+   * receiver} when it can (null: whoever completes the future does).
+   */
+  static <T extends @Nullable Object> RemoteAnswer<T> remote(
+      String from, TimeSource time, RemoteAnswer.@Nullable Receiver receiver) {
+    return ValueFuture.remote(from, time, receiver);
   }
 
   /** A future already failed with {@code failure}. */

@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionStage;
 import java.util.concurrent.locks.LockSupport;
+import org.armgals.active.spi.RemoteAnswer;
 import org.jspecify.annotations.Nullable;
 
 /**
@@ -20,7 +21,7 @@ import org.jspecify.annotations.Nullable;
  * <p>{@link #result} goes once from {@code null} to the value ({@link #NIL} for null) or a {@link
  * Failure}; the completing write happens-before every read that sees it.
  */
-final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
+final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T>, RemoteAnswer<T> {
   private static final Object NIL = new Object();
 
   /**
@@ -67,30 +68,10 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
   private final @Nullable Core<?> completer;
 
   /**
-   * Who receives the answers of a transport's requests and look-ups, so that a waiter can receive
-   * its own (decision 0032).
-   */
-  interface Receiver {
-    /**
-     * Receives answers on the calling thread, its future's and any other, until {@code future} is
-     * completed or {@code deadline} (on the transport's time, if {@code timed}) has passed.
-     *
-     * @return true if the future may be completed or the time run out: the waiter looks again;
-     *     false if the waiter should park, another thread receiving for it (the lead is taken, this
-     *     thread may not lead, or receiving stopped: the transport closed, the connection failed,
-     *     the thread was interrupted and its flag is set again)
-     */
-    boolean lead(ValueFuture<?> future, boolean timed, long deadline);
-
-    /** The future is looked at without waiting: some thread must be receiving. */
-    void observe();
-  }
-
-  /**
    * Where the answer of a future a transport completes comes from ({@code from}, for messages), the
    * time its waiters' timeouts are read on, and who receives it (null: whoever completes it).
    */
-  private record Remote(String from, TimeSource time, @Nullable Receiver receiver) {}
+  private record Remote(String from, TimeSource time, RemoteAnswer.@Nullable Receiver receiver) {}
 
   /** Null unless a transport completes this future; its waiters then park at once. */
   private final @Nullable Remote remote;
@@ -118,7 +99,7 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
    * to whoever completes the future. {@code from} names where the answer comes from in failures.
    */
   static <T extends @Nullable Object> ValueFuture<T> remote(
-      String from, TimeSource time, @Nullable Receiver receiver) {
+      String from, TimeSource time, RemoteAnswer.@Nullable Receiver receiver) {
     return new ValueFuture<>(
         null,
         new Remote(
@@ -195,8 +176,8 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
     return result != null;
   }
 
-  /** Whether the future is completed; unlike {@link #isDone}, never a reason to receive. */
-  boolean completed() {
+  @Override
+  public boolean completed() {
     return result != null;
   }
 
@@ -299,7 +280,7 @@ final class ValueFuture<T extends @Nullable Object> implements ReplyFuture<T> {
     long deadline = timed ? time.nanoTime() + timeoutNanos : 0;
     Thread self = Thread.currentThread();
     Waiter w = push(self);
-    Receiver receiving = rm == null ? null : rm.receiver();
+    RemoteAnswer.Receiver receiving = rm == null ? null : rm.receiver();
     Dispatcher.beforeBlock();
     try {
       while ((r = result) == null) {

@@ -14,9 +14,9 @@ import org.junit.jupiter.params.provider.MethodSource;
  * What a filter means: JMS message-selector semantics over a map of properties
  * (docs/architecture.md, runtime semantics 6).
  */
-class FilterContractTest {
+public class FilterContractTest {
 
-  static final Map<String, Object> BATTERY =
+  public static final Map<String, Object> BATTERY =
       Map.of(
           "kind",
           "StateEvent",
@@ -31,7 +31,7 @@ class FilterContractTest {
           "charging",
           false);
 
-  static Stream<Arguments> selectors() {
+  public static Stream<Arguments> selectors() {
     return Stream.of(
         Arguments.of("kind = 'StateEvent'", true),
         Arguments.of("kind = 'ActionEvent'", false),

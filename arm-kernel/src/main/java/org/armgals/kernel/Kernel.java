@@ -3,9 +3,10 @@ package org.armgals.kernel;
 import java.util.Optional;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
-import org.armgals.active.JmsTransport;
+import org.armgals.active.spi.AllowList;
+import org.armgals.active.spi.NameService;
+import org.armgals.active.spi.PresenceListener;
 import org.armgals.kernel.spi.MetaPolicy;
-import org.armgals.presence.spi.PresenceListener;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.State;
 import org.armgals.representation.StateSpace;
@@ -88,7 +89,7 @@ public interface Kernel extends AutoCloseable {
    * @throws org.armgals.active.FutureTimeoutException no runtime answers for {@code name} within
    *     the transport's reply timeout
    */
-  Entity lookupRemote(JmsTransport names, String name, StructuralMeta<?> kind);
+  Entity lookupRemote(NameService names, String name, StructuralMeta<?> kind);
 
   /**
    * Adds every kernel event to the allow-list of {@code builder}, each on its topic: notifications
@@ -99,18 +100,19 @@ public interface Kernel extends AutoCloseable {
    *
    * @return {@code builder}
    */
-  static JmsTransport.Builder allowKernelEvents(JmsTransport.Builder builder) {
+  static <B extends AllowList> B allowKernelEvents(B builder) {
     return Wire.allow(builder);
   }
 
   /**
-   * The kernel's ear on runtime presence (decision 0028), to add to this runtime's {@link
-   * org.armgals.presence.Presence}: when a runtime is reported {@link
-   * org.armgals.presence.PresenceEvent.Lost lost} or {@link org.armgals.presence.PresenceEvent.Left
-   * gone}, every behavioral meta of this kernel that models an entity living there marks that model
-   * lost ({@link ModelView#lost()}) and its policy hears a {@link FailureEvent} whose {@code error}
-   * is the presence event's class name and whose message names the runtime. Joins are ignored: a
-   * model stops being lost when it next hears from its entity.
+   * The kernel's ear on runtime presence (decision 0028), to add to this runtime's presence (the
+   * JMS transport's {@code org.armgals.active.jms.Presence}): when a runtime is reported {@link
+   * org.armgals.active.spi.PresenceEvent.Lost lost} or {@link
+   * org.armgals.active.spi.PresenceEvent.Left gone}, every behavioral meta of this kernel that
+   * models an entity living there marks that model lost ({@link ModelView#lost()}) and its policy
+   * hears a {@link FailureEvent} whose {@code error} is the presence event's class name and whose
+   * message names the runtime. Joins are ignored: a model stops being lost when it next hears from
+   * its entity.
    */
   PresenceListener presenceListener();
 

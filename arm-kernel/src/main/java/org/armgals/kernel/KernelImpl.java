@@ -11,12 +11,12 @@ import java.util.concurrent.ConcurrentHashMap;
 import org.armgals.active.ActiveObject;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
-import org.armgals.active.JmsTransport;
 import org.armgals.active.ObjectConfig;
+import org.armgals.active.spi.NameService;
+import org.armgals.active.spi.PresenceEvent;
+import org.armgals.active.spi.PresenceListener;
 import org.armgals.kernel.spi.MetaPolicy;
 import org.armgals.kernel.spi.ReflectionListener;
-import org.armgals.presence.PresenceEvent;
-import org.armgals.presence.spi.PresenceListener;
 import org.armgals.representation.Behaviors;
 import org.armgals.representation.State;
 import org.armgals.representation.StateSpace;
@@ -320,7 +320,7 @@ final class KernelImpl implements Kernel {
   }
 
   @Override
-  public Entity lookupRemote(JmsTransport names, String name, StructuralMeta<?> kind) {
+  public Entity lookupRemote(NameService names, String name, StructuralMeta<?> kind) {
     requireNonNull(names, "names");
     requireNonNull(name, "name");
     requireNonNull(kind, "kind");

@@ -5,8 +5,8 @@ import static java.util.Objects.requireNonNull;
 import java.util.Map;
 import org.armgals.active.Address;
 import org.armgals.active.Event;
-import org.armgals.active.JmsTransport;
 import org.armgals.active.Request;
+import org.armgals.active.spi.AllowList;
 import org.jspecify.annotations.Nullable;
 
 /**
@@ -129,7 +129,7 @@ final class Wire {
    * Allows every kernel event on {@code builder}, each on the topic of decision 0024; adaptation
    * requests and their acknowledgements travel at least once (decision 0042).
    */
-  static JmsTransport.Builder allow(JmsTransport.Builder builder) {
+  static <B extends AllowList> B allow(B builder) {
     requireNonNull(builder, "builder");
     for (Class<? extends Event> toMeta :
         java.util.List.<Class<? extends Event>>of(
@@ -141,12 +141,11 @@ final class Wire {
             AdaptationAck.class,
             Barrier.class,
             Free.class)) {
-      builder.allow(JmsTransport.Topic.BMETA, toMeta);
+      builder.allow("arm/BMeta", toMeta);
     }
-    builder.allow(JmsTransport.Topic.SMETA, Modify.class);
-    builder.guarantee(
-        JmsTransport.Guarantee.AT_LEAST_ONCE, AdaptationRequest.class, AdaptationAck.class);
-    return builder.allow(
+    builder.allow("arm/SMeta", Modify.class);
+    builder.atLeastOnce(AdaptationRequest.class, AdaptationAck.class);
+    builder.allow(
         AdaptationRequest.class,
         ResyncRequest.class,
         Stimulus.class,
@@ -160,5 +159,6 @@ final class Wire {
         Adaptation.ApplyBehavior.class,
         NotificationPolicy.class,
         Threshold.class);
+    return builder;
   }
 }

@@ -123,7 +123,7 @@ class LockStepAcrossRuntimesTest extends TwoRuntimesFixture {
     Thread stepper = Thread.ofVirtual().start(() -> clock.step(2)); // waits for the answers
     baseKernel
         .presenceListener()
-        .onPresence(new org.armgals.presence.PresenceEvent.Lost("meta", Duration.ofSeconds(1)));
+        .onPresence(new org.armgals.active.spi.PresenceEvent.Lost("meta", Duration.ofSeconds(1)));
     stepper.join(Duration.ofMinutes(1));
 
     assertThat(stepper.isAlive()).isFalse();

@@ -9,7 +9,7 @@ import org.armgals.active.ActiveRef;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.FutureTimeoutException;
 import org.armgals.active.FutureValue;
-import org.armgals.active.JmsTransport;
+import org.armgals.active.jms.JmsTransport;
 import org.armgals.brokers.RuntimeNode.Count;
 import org.armgals.brokers.RuntimeNode.Counter;
 import org.armgals.brokers.RuntimeNode.Ping;

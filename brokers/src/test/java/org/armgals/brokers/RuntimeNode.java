@@ -13,10 +13,10 @@ import org.armgals.active.Address;
 import org.armgals.active.Event;
 import org.armgals.active.EventProcessor;
 import org.armgals.active.FutureTimeoutException;
-import org.armgals.active.JmsTransport;
 import org.armgals.active.Request;
 import org.armgals.active.TimeSource;
-import org.armgals.presence.Presence;
+import org.armgals.active.jms.JmsTransport;
+import org.armgals.active.jms.Presence;
 import org.jspecify.annotations.Nullable;
 
 /**

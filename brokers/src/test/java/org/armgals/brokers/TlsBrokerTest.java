@@ -8,7 +8,7 @@ import java.time.Duration;
 import org.apache.activemq.artemis.jms.client.ActiveMQConnectionFactory;
 import org.armgals.active.ActiveObject;
 import org.armgals.active.ActiveRuntime;
-import org.armgals.active.JmsTransport;
+import org.armgals.active.jms.JmsTransport;
 import org.armgals.brokers.RuntimeNode.Counter;
 import org.armgals.brokers.RuntimeNode.Sum;
 import org.junit.jupiter.api.Test;

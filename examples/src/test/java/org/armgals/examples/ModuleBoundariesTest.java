@@ -26,7 +26,6 @@ import org.armgals.active.BufferFullException;
 import org.armgals.active.Callable;
 import org.armgals.active.Clock;
 import org.armgals.active.ClockStats;
-import org.armgals.active.EmbeddedBroker;
 import org.armgals.active.Event;
 import org.armgals.active.EventProcessor;
 import org.armgals.active.Filter;
@@ -37,7 +36,6 @@ import org.armgals.active.FutureNotAvailableException;
 import org.armgals.active.FutureTimeoutException;
 import org.armgals.active.FutureValue;
 import org.armgals.active.Guard;
-import org.armgals.active.JmsTransport;
 import org.armgals.active.ManualClock;
 import org.armgals.active.MethodRequest;
 import org.armgals.active.Mode;
@@ -53,15 +51,23 @@ import org.armgals.active.Selectable;
 import org.armgals.active.ServantAction;
 import org.armgals.active.ServantFunction;
 import org.armgals.active.ShutdownMode;
-import org.armgals.active.Subscription;
 import org.armgals.active.SynchronizedMethodRequest;
 import org.armgals.active.SynchronousFuture;
 import org.armgals.active.SynchronousFutureValue;
 import org.armgals.active.TimeSource;
 import org.armgals.active.TransportStats;
 import org.armgals.active.WaitCycleException;
+import org.armgals.active.jms.EmbeddedBroker;
+import org.armgals.active.jms.JmsTransport;
+import org.armgals.active.jms.Presence;
+import org.armgals.active.jms.Subscription;
+import org.armgals.active.spi.AllowList;
 import org.armgals.active.spi.ErrorHandler;
+import org.armgals.active.spi.NameService;
 import org.armgals.active.spi.ObjectListener;
+import org.armgals.active.spi.PresenceEvent;
+import org.armgals.active.spi.PresenceListener;
+import org.armgals.active.spi.RemoteAnswer;
 import org.armgals.active.spi.Transport;
 import org.armgals.examples.archfixture.alpha.Api;
 import org.armgals.examples.archfixture.gamma.Service;
@@ -83,7 +89,6 @@ class ModuleBoundariesTest {
       List.of(
           "org.armgals.active",
           "org.armgals.representation",
-          "org.armgals.presence",
           "org.armgals.kernel",
           "org.armgals.gals",
           "org.armgals.maam",
@@ -91,7 +96,10 @@ class ModuleBoundariesTest {
           "org.armgals.examples",
           "org.armgals.bench");
 
-  /** arm-active's public API: adding a public type means adding it here, on purpose. */
+  /**
+   * arm-active's public API, the JMS transport's package ({@code org.armgals.active.jms}) included:
+   * adding a public type means adding it here, on purpose.
+   */
   static final List<Class<?>> ACTIVE_API =
       List.of(
           ActiveContext.class,
@@ -109,8 +117,6 @@ class ModuleBoundariesTest {
           Event.class,
           EventProcessor.class,
           Future.class,
-          EmbeddedBroker.class,
-          EmbeddedBroker.Builder.class,
           Filter.class,
           FutureEvent.class,
           FutureInterruptedException.class,
@@ -118,10 +124,6 @@ class ModuleBoundariesTest {
           FutureTimeoutException.class,
           FutureValue.class,
           Guard.class,
-          JmsTransport.class,
-          JmsTransport.Builder.class,
-          JmsTransport.Guarantee.class,
-          JmsTransport.Topic.class,
           ManualClock.class,
           MethodRequest.class,
           Mode.class,
@@ -141,17 +143,34 @@ class ModuleBoundariesTest {
           ServantAction.class,
           ServantFunction.class,
           ShutdownMode.class,
-          Subscription.class,
           SynchronizedMethodRequest.class,
           SynchronousFuture.class,
           SynchronousFutureValue.class,
           TimeSource.class,
           TransportStats.class,
           WaitCycleException.class,
+          AllowList.class,
           ErrorHandler.class,
+          NameService.class,
           ObjectListener.class,
+          PresenceEvent.class,
+          PresenceEvent.Joined.class,
+          PresenceEvent.Left.class,
+          PresenceEvent.Lost.class,
+          PresenceListener.class,
+          RemoteAnswer.class,
+          RemoteAnswer.Receiver.class,
           Transport.class,
-          Transport.Inbound.class);
+          Transport.Inbound.class,
+          EmbeddedBroker.class,
+          EmbeddedBroker.Builder.class,
+          JmsTransport.class,
+          JmsTransport.Builder.class,
+          JmsTransport.Guarantee.class,
+          JmsTransport.Topic.class,
+          Presence.class,
+          Presence.Builder.class,
+          Subscription.class);
 
   private static final JavaClasses ARMGALS =
       new ClassFileImporter()
@@ -175,6 +194,16 @@ class ModuleBoundariesTest {
     ModuleRules.internalPackagesStayInTheirModule(MODULE_ROOTS).check(ARMGALS);
   }
 
+  /**
+   * The core of arm-active ({@code org.armgals.active} and its {@code .spi}) names no class of the
+   * JMS transport, of Jakarta Messaging or of Artemis but its selector library (the filters' own
+   * semantics, decision 0058), so that a user in one JVM needs none of them.
+   */
+  @Test
+  void armActivesCoreNamesNoTransportClass() {
+    ModuleRules.coreNamesNoTransportClass().check(ARMGALS);
+  }
+
   @Test
   void armActiveExportsOnlyItsApi() {
     ModuleRules.onlyTheApiIsPublic("org.armgals.active", ACTIVE_API).check(ARMGALS);
@@ -186,7 +215,6 @@ class ModuleBoundariesTest {
     "arm-representation, org.armgals.representation",
     "arm-kernel, org.armgals.kernel",
     "arm-gals, org.armgals.gals",
-    "arm-presence, org.armgals.presence",
     "maam-framework, org.armgals.maam",
     "maam-sim, org.armgals.maam.sim"
   })
@@ -209,7 +237,6 @@ class ModuleBoundariesTest {
       strings = {
         "org.armgals.active",
         "org.armgals.representation",
-        "org.armgals.presence",
         "org.armgals.kernel",
         "org.armgals.gals",
         "org.armgals.maam",

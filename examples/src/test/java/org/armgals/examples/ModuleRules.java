@@ -1,6 +1,7 @@
 package org.armgals.examples;
 
 import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.classes;
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
 import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
 
 import com.tngtech.archunit.base.DescribedPredicate;
@@ -112,6 +113,30 @@ final class ModuleRules {
         .should()
         .beFreeOfCycles()
         .because("docs/architecture.md, layering rule 4: the packages of a module form no cycle");
+  }
+
+  /**
+   * No class of arm-active's core ({@code org.armgals.active} and {@code org.armgals.active.spi})
+   * depends on the JMS transport's package, on Jakarta Messaging or on Artemis, but for Artemis's
+   * selector library and the {@code SimpleString} its filters take (docs/decisions/0058).
+   */
+  static ArchRule coreNamesNoTransportClass() {
+    return noClasses()
+        .that()
+        .resideInAnyPackage("org.armgals.active", "org.armgals.active.spi")
+        .should()
+        .dependOnClassesThat(
+            DescribedPredicate.describe(
+                "are of the JMS transport, Jakarta Messaging or Artemis (but its selector)",
+                (JavaClass c) -> {
+                  String n = c.getName();
+                  return n.startsWith("org.armgals.active.jms.")
+                      || n.startsWith("jakarta.jms.")
+                      || (n.startsWith("org.apache.activemq.")
+                          && !n.startsWith("org.apache.activemq.artemis.selector.")
+                          && !n.equals("org.apache.activemq.artemis.api.core.SimpleString"));
+                }))
+        .because("docs/decisions/0058: an in-JVM user of arm-active gets no broker");
   }
 
   private static boolean inPackage(String pkg, String root) {

@@ -13,9 +13,9 @@ import org.jspecify.annotations.Nullable;
  * between objects of one runtime are handed over in memory, never serialized); it uses it for every
  * event whose destination names another runtime.
  *
- * <p>{@link Transport#inJvm()} links runtimes of one JVM; {@link org.armgals.active.JmsTransport}
- * links runtimes of any JVMs through an Apache ActiveMQ Artemis broker (docs/architecture.md,
- * runtime semantics 5).
+ * <p>{@link Transport#inJvm()} links runtimes of one JVM; {@code
+ * org.armgals.active.jms.JmsTransport} links runtimes of any JVMs through an Apache ActiveMQ
+ * Artemis broker (docs/architecture.md, runtime semantics 5).
  *
  * <p>Threading: {@link #send} is called concurrently by any thread; {@link #attach} and {@link
  * #detach} by the runtime when it starts and stops.

@@ -9,9 +9,9 @@ import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
 import org.armgals.active.Event;
 import org.armgals.active.EventProcessor;
-import org.armgals.active.JmsTransport;
 import org.armgals.active.Request;
 import org.armgals.active.TimeSource;
+import org.armgals.active.jms.JmsTransport;
 import org.jspecify.annotations.Nullable;
 
 /**

@@ -7,7 +7,7 @@ import java.nio.file.Path;
 import java.util.Comparator;
 import java.util.stream.Stream;
 import org.apache.activemq.artemis.jms.client.ActiveMQConnectionFactory;
-import org.armgals.active.EmbeddedBroker;
+import org.armgals.active.jms.EmbeddedBroker;
 
 /**
  * The brokers every implementation of the benchmark runs over: the runtime's own {@link

@@ -18,15 +18,15 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalLong;
 import org.armgals.active.ActiveRuntime;
-import org.armgals.active.JmsTransport;
 import org.armgals.active.ShutdownMode;
+import org.armgals.active.jms.JmsTransport;
+import org.armgals.active.jms.Presence;
 import org.armgals.examples.cli.RunSettings;
 import org.armgals.examples.cli.Summary;
 import org.armgals.kernel.Entity;
 import org.armgals.kernel.Kernel;
 import org.armgals.kernel.KernelOptions;
 import org.armgals.kernel.StructuralMeta;
-import org.armgals.presence.Presence;
 import org.armgals.representation.p.PState;
 
 /**
