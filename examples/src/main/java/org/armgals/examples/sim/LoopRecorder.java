@@ -349,7 +349,9 @@ final class LoopRecorder implements ReflectionListener {
 
   /** Tells {@code tap} each record from now on as it is made, on the thread that makes it. */
   void tap(java.util.function.Consumer<Line> tap) {
-    this.tap = requireNonNull(tap, "tap");
+    requireNonNull(tap, "tap");
+    lines.forEach(tap); // those before the first cycle: the metas' first filters
+    this.tap = tap;
   }
 
   private long simCycle() {

@@ -122,15 +122,17 @@ function drawModels(models) {
   const div = $("models");
   div.replaceChildren();
   for (const r of robots) {
+    const box = document.createElement("div");
+    box.className = "model";
+    const title = document.createElement("b"); title.textContent = "of " + r; box.appendChild(title);
     const d = document.createElement("dl");
-    d.className = "model";
-    const title = document.createElement("b"); title.textContent = "of " + r; d.appendChild(title);
+    box.appendChild(d);
     for (const [k, v] of Object.entries(models[r])) {
       const dt = document.createElement("dt"); dt.textContent = k;
       const dd = document.createElement("dd"); dd.textContent = String(v); dd.title = String(v);
       d.append(dt, dd);
     }
-    div.appendChild(d);
+    div.appendChild(box);
   }
 }
 
