@@ -30,7 +30,9 @@ import org.armgals.maam.sim.spi.Pacer;
  *       that {@code armgals replay} can run it again);
  *   <li>{@value Outputs#TRAJECTORY}, {@value Outputs#ENERGY}, {@value Outputs#ADAPTATIONS}: the
  *       atoms' paths seen from above, the energy left over time, the adaptations on a time line;
- *   <li>{@value Outputs#START} and {@value Outputs#END}: the molecule at the start and at the end.
+ *   <li>{@value Outputs#START} and {@value Outputs#END}: the molecule at the start and at the end;
+ *   <li>{@value #PROGRAMS}: the robots' schemas and schedules as they change, for {@code armgals
+ *       view}.
  * </ul>
  *
  * It writes them into a {@link Staging} directory inside the output directory and moves them into
