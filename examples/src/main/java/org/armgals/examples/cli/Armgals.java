@@ -26,7 +26,8 @@ import picocli.CommandLine.Spec;
 
 /**
  * The {@code armgals} command: {@code list}, {@code run <example>}, {@code replay <trace>}, {@code
- * new <name>}, {@code completion} and {@code help}. See the package javadoc for the exit statuses.
+ * view <trace>}, {@code new <name>}, {@code completion} and {@code help}. See the package javadoc
+ * for the exit statuses.
  */
 @Command(
     name = "armgals",
@@ -74,6 +75,7 @@ public final class Armgals implements Runnable {
             .addSubcommand(new ListCommand(catalog, out))
             .addSubcommand(new RunCommand(catalog, out))
             .addSubcommand(new ReplayCommand(catalog, out))
+            .addSubcommand(new ViewCommand(catalog, out))
             .addSubcommand(new NewCommand(out))
             .addSubcommand(new CompletionCommand(out))
             .addSubcommand(new CommandLine.HelpCommand());

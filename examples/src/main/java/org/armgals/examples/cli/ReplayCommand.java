@@ -76,7 +76,7 @@ final class ReplayCommand implements Callable<Integer> {
     return verdict instanceof Replay.Differs ? Armgals.FAILED : 0;
   }
 
-  private static String read(Path trace) {
+  static String read(Path trace) {
     try {
       return Files.readString(trace, StandardCharsets.UTF_8);
     } catch (NoSuchFileException e) {

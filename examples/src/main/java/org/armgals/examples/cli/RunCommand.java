@@ -8,6 +8,8 @@ import java.time.Duration;
 import java.util.Optional;
 import java.util.OptionalLong;
 import java.util.concurrent.Callable;
+import org.armgals.examples.live.LiveServer;
+import org.armgals.examples.sim.SimExample;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -60,6 +62,25 @@ final class RunCommand implements Callable<Integer> {
   @Option(names = "--realtime", description = "pace the run to real time")
   boolean realTime;
 
+  @Option(
+      names = "--live",
+      description =
+          "show the run in a browser while it goes: serves a page on 127.0.0.1 and prints its"
+              + " address; the run is paced to real time (times --speed)")
+  boolean live;
+
+  @Option(
+      names = "--live-port",
+      paramLabel = "<port>",
+      description = "the port of the live view's page (default: a free one)")
+  Integer livePort;
+
+  @Option(
+      names = "--speed",
+      paramLabel = "<factor>",
+      description = "with --live: simulated seconds per real second (default 1)")
+  Double speed;
+
   @Option(names = "--broker", paramLabel = "<url>", description = "an external Artemis broker")
   URI broker;
 
@@ -105,7 +126,7 @@ final class RunCommand implements Callable<Integer> {
             Optional.ofNullable(broker),
             outDir == null ? Path.of("runs", example.name()) : outDir,
             meta);
-    Summary summary = example.run(settings, out);
+    Summary summary = live ? live(example, settings) : example.run(settings, out);
     out.println();
     out.println("summary of " + example.name() + ":");
     int width = summary.entries().stream().mapToInt(e -> e.name().length()).max().orElse(0);
@@ -113,6 +134,23 @@ final class RunCommand implements Callable<Integer> {
       out.printf("  %-" + width + "s  %s%n", entry.name(), entry.value());
     }
     return 0;
+  }
+
+  /** The run with its live view: the page is served while it runs, and stops when it ends. */
+  private Summary live(Example example, RunSettings settings) {
+    if (!(example instanceof SimExample simulated)) {
+      throw new UsageException(
+          "'" + example.name() + "' does not run on the simulator: it has nothing to show live");
+    }
+    double factor = speed == null ? 1.0 : speed;
+    if (!(factor > 0) || Double.isInfinite(factor)) {
+      throw new IllegalArgumentException("--speed must be a finite number above 0, was " + factor);
+    }
+    try (LiveServer server = LiveServer.start(livePort == null ? 0 : livePort)) {
+      out.println("armgals: the live view is at " + server.address());
+      out.flush();
+      return simulated.run(settings, out, server, factor);
+    }
   }
 
   /** Checks each option's range, naming the option as given and its value. */
@@ -126,6 +164,14 @@ final class RunCommand implements Callable<Integer> {
     if (periodMs > MAX_PERIOD_MS) {
       throw new IllegalArgumentException(
           "--period-ms must be at most " + MAX_PERIOD_MS + " (an hour), was " + periodMs);
+    }
+    if (!live && (livePort != null || speed != null)) {
+      throw new UsageException(
+          (livePort != null ? "--live-port" : "--speed") + " applies to a live run: add --live");
+    }
+    if (livePort != null && (livePort < 0 || livePort > 65_535)) {
+      throw new IllegalArgumentException(
+          "--live-port must be a port from 1 to 65535, or 0 for a free one; was " + livePort);
     }
     if (atoms != null && atoms < 1) {
       throw new IllegalArgumentException("--atoms must be at least 1, was " + atoms);

@@ -1,7 +1,8 @@
 /**
- * The {@code armgals} command line: list the examples, run one, replay a run from its trace, and
- * write the skeleton of a new robot. {@link org.armgals.examples.cli.Armgals#main} is the entry
- * point of the {@code ./armgals} launcher and of {@code java -jar examples.jar}.
+ * The {@code armgals} command line: list the examples, run one (and watch it live in a browser),
+ * replay a run from its trace, play it back in the browser, and write the skeleton of a new robot.
+ * {@link org.armgals.examples.cli.Armgals#main} is the entry point of the {@code ./armgals}
+ * launcher and of {@code java -jar examples.jar}.
  *
  * <p>Exit status: 0 when the command did what it was asked, 1 when a run failed or a replay did not
  * reproduce its trace, 2 when the command line was wrong (a bad option, an unknown example, a file

@@ -51,6 +51,7 @@ final class LoopRecorder implements ReflectionListener {
   private final java.util.Set<String> metas = java.util.concurrent.ConcurrentHashMap.newKeySet();
   private volatile @Nullable Address ignored;
   private final Map<String, Long> answered = new java.util.concurrent.ConcurrentHashMap<>();
+  private volatile java.util.function.Consumer<Line> tap = line -> {};
 
   /**
    * One record, placed by its cycle, its side, the meta-entity it is of (empty on the robots' side)
@@ -341,7 +342,16 @@ final class LoopRecorder implements ReflectionListener {
   }
 
   private void add(int side, String group, long cycle, Map<String, Object> fields) {
-    lines.add(new Line(cycle, side, group, order.incrementAndGet(), fields));
+    Line line = new Line(cycle, side, group, order.incrementAndGet(), fields);
+    lines.add(line);
+    tap.accept(line);
+  }
+
+  /** Tells {@code tap} each record from now on as it is made, on the thread that makes it. */
+  void tap(java.util.function.Consumer<Line> tap) {
+    requireNonNull(tap, "tap");
+    lines.forEach(tap); // those before the first cycle: the metas' first filters
+    this.tap = tap;
   }
 
   private long simCycle() {

@@ -424,6 +424,75 @@ public final class Reflection implements AutoCloseable {
         });
   }
 
+  /**
+   * Tells {@code watcher} each record of the loop from now on as it is made, as {@value #LOOP} will
+   * have it, on the thread that makes it: the records of the meta's side too when the meta runs in
+   * the robots' JVM; in another, only the robots' side (the meta's comes at {@link #finish}).
+   */
+  public void watch(RunWatcher watcher) {
+    requireNonNull(watcher, "watcher");
+    recorder.tap(line -> watcher.loop(LoopJson.write(LoopRecorder.merge(List.of(line)).get(0))));
+  }
+
+  /**
+   * Each robot's program now, by name: its schemas ({@code schemas}) and its modules in the order
+   * they run ({@code schedule}). On the thread that runs the simulation, between cycles.
+   */
+  public Map<String, Object> programs() {
+    Map<String, Object> programs = new LinkedHashMap<>();
+    robots.forEach(
+        (name, robot) -> {
+          Map<String, Object> program = new LinkedHashMap<>();
+          program.put(
+              "schemas",
+              robot.metaRobot().schemas().stream().map(org.armgals.maam.Schema::name).toList());
+          program.put("schedule", robot.schedule().names());
+          programs.put(name, program);
+        });
+    return programs;
+  }
+
+  /**
+   * Asks each meta in the robots' JVM for its model of each robot it watches and tells {@code sink}
+   * the robot and the model when it answers, on the meta's thread; asks nothing of a meta in
+   * another JVM.
+   */
+  public void models(java.util.function.BiConsumer<String, Map<String, Object>> sink) {
+    requireNonNull(sink, "sink");
+    if (level == null || isRemote() || finished) {
+      return;
+    }
+    for (MetaLevel.Watch w : watches) {
+      for (String robot : w.robots()) {
+        AbstractRobot base = robots.get(robot);
+        if (base == null) {
+          continue;
+        }
+        w.meta()
+            .model(base)
+            .toCompletionStage()
+            .thenAccept(view -> sink.accept(robot, model(view)));
+      }
+    }
+  }
+
+  private static Map<String, Object> model(org.armgals.kernel.ModelView view) {
+    Map<String, Object> m = new LinkedHashMap<>();
+    m.put("state", String.valueOf(view.state()));
+    m.put("last notification", view.lastSeq());
+    m.put("filter", view.filter());
+    m.put("requested version", view.requestedVersion());
+    m.put("applied version", view.appliedVersion());
+    m.put("held back", view.suppressedAdaptations());
+    m.put("refused", view.refusedAdaptations());
+    if (view.lastRefusal() != null) {
+      m.put("last refusal", view.lastRefusal());
+    }
+    m.put("lock step", view.lockStep());
+    m.put("lost", view.lost());
+    return m;
+  }
+
   /** A meta's note, recorded on the loop's time line. */
   private void note(String robot, long nanoTime, String text) {
     String meta = metaOf.containsKey(robot) ? metaOf.get(robot).name() : "meta";

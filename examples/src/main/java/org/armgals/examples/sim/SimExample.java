@@ -55,6 +55,31 @@ public interface SimExample extends Example {
    */
   Crew start(Simulation sim, RunSettings settings, Journal journal);
 
+  /**
+   * Runs it as {@code armgals run --live} does: paced to real time times {@code speed} (whatever
+   * the settings say of pacing), telling {@code watcher} what happens as it does.
+   *
+   * @throws IllegalArgumentException {@code speed} is not a finite number above zero
+   */
+  default Summary run(RunSettings settings, PrintStream out, RunWatcher watcher, double speed) {
+    if (!(speed > 0) || Double.isInfinite(speed)) {
+      throw new IllegalArgumentException("--speed must be a finite number above 0, was " + speed);
+    }
+    RunSettings paced =
+        new RunSettings(
+            settings.cycles(),
+            settings.simulated(),
+            settings.period(),
+            settings.seed(),
+            settings.atoms(),
+            true,
+            settings.broker(),
+            settings.out(),
+            settings.meta());
+    return SimRun.run(
+        this, paced, out, java.util.Objects.requireNonNull(watcher, "watcher"), speed);
+  }
+
   /** Runs it as {@code armgals run} does: see {@link SimRun}. */
   @Override
   default Summary run(RunSettings settings, PrintStream out) {

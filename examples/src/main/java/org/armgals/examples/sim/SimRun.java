@@ -30,7 +30,9 @@ import org.armgals.maam.sim.spi.Pacer;
  *       that {@code armgals replay} can run it again);
  *   <li>{@value Outputs#TRAJECTORY}, {@value Outputs#ENERGY}, {@value Outputs#ADAPTATIONS}: the
  *       atoms' paths seen from above, the energy left over time, the adaptations on a time line;
- *   <li>{@value Outputs#START} and {@value Outputs#END}: the molecule at the start and at the end.
+ *   <li>{@value Outputs#START} and {@value Outputs#END}: the molecule at the start and at the end;
+ *   <li>{@value #PROGRAMS}: the robots' schemas and schedules as they change, for {@code armgals
+ *       view}.
  * </ul>
  *
  * It writes them into a {@link Staging} directory inside the output directory and moves them into
@@ -62,12 +64,38 @@ final class SimRun {
 
   static final String FREE = "free";
 
+  /**
+   * The robots' programs, one JSON object a line: a robot's schemas and schedule at the first cycle
+   * and after each cycle that changed them ({@code cycle}, {@code robot}, {@code schemas}, {@code
+   * schedule}), for {@code armgals view}.
+   */
+  static final String PROGRAMS = "programs.jsonl";
+
   private SimRun() {}
 
   static Summary run(SimExample example, RunSettings settings, PrintStream out) {
     try (Interruption interruption = Interruption.onCtrlC()) {
       return run(
           example, settings, out, System.console() != null, TimeSource.system(), interruption);
+    }
+  }
+
+  /**
+   * The run as {@code armgals run --live} makes it: paced to real time times {@code speed}, telling
+   * {@code watcher} what happens.
+   */
+  static Summary run(
+      SimExample example, RunSettings settings, PrintStream out, RunWatcher watcher, double speed) {
+    try (Interruption interruption = Interruption.onCtrlC()) {
+      return run(
+          example,
+          settings,
+          out,
+          System.console() != null,
+          TimeSource.system(),
+          interruption,
+          watcher,
+          speed);
     }
   }
 
@@ -96,6 +124,19 @@ final class SimRun {
       boolean terminal,
       TimeSource clock,
       Interruption interruption) {
+    return run(example, settings, out, terminal, clock, interruption, RunWatcher.NONE, 1.0);
+  }
+
+  /** As above, telling {@code watcher} what happens, paced at {@code speed} if real time. */
+  static Summary run(
+      SimExample example,
+      RunSettings settings,
+      PrintStream out,
+      boolean terminal,
+      TimeSource clock,
+      Interruption interruption,
+      RunWatcher watcher,
+      double speed) {
     checkBroker(example, settings);
     Scene scene = example.scene(settings);
     long cycles = cycles(example, settings);
@@ -103,14 +144,20 @@ final class SimRun {
       RunSettings staged = settings.withOut(staging.dir());
       out.printf(
           Locale.ROOT,
-          "armgals %s: scene '%s', %d atoms, %d cycles of %s ms, seed %d%s%n",
+          "armgals %s: scene '%s', %d atoms, %d cycles of %s ms, seed %d%s%s%n",
           example.name(),
           scene.name(),
           scene.atoms().size(),
           cycles,
           millis(settings.period()),
           settings.seed(),
-          settings.realTime() ? ", paced to real time" : "");
+          settings.realTime() ? ", paced to real time" : "",
+          settings.realTime() && speed != 1.0
+              ? String.format(
+                  Locale.ROOT,
+                  " times %s",
+                  new java.math.BigDecimal(speed).stripTrailingZeros().toPlainString())
+              : "");
       Recording recording = new Recording(scene.params());
       Progress progress = new Progress(out, terminal, cycles, clock);
       long ran;
@@ -119,13 +166,23 @@ final class SimRun {
       List<Summary.Entry> figures;
       Path tracePath = staging.dir().resolve(TRACE);
       try (Writer trace = Files.newBufferedWriter(tracePath, StandardCharsets.UTF_8)) {
-        try (Simulation sim = build(example, staged, scene, cycles, trace)) {
+        try (Simulation sim = build(example, staged, scene, cycles, trace, speed)) {
           RecordingJournal journal = new RecordingJournal(sim, recording);
           // The first sample is taken after cycle 0, of the readings at its start (t = 0): the
           // same readings as the trace's first line, with the scene's bonds made and its poses
           // applied.
-          try (Crew crew = example.start(sim, staged, journal)) {
-            long[] counts = drive(sim, cycles, settings, recording, progress, interruption);
+          try (Crew crew = example.start(sim, staged, journal);
+              Writer programs =
+                  Files.newBufferedWriter(
+                      staging.dir().resolve(PROGRAMS), StandardCharsets.UTF_8)) {
+            watcher.started(
+                LiveJson.start("live", example.name(), scene, cycles, settings.period(), speed));
+            crew.reflection().ifPresent(r -> r.watch(watcher));
+            Watching watching =
+                new Watching(watcher, sim, scene, crew.reflection().orElse(null), programs);
+            long[] counts =
+                drive(sim, cycles, settings, recording, progress, interruption, watching, speed);
+            watcher.ended(LiveJson.end(counts[0], cycles));
             ran = counts[0];
             missed = counts[1];
             recording.end(sim.timeNanos());
@@ -198,7 +255,7 @@ final class SimRun {
     Scene scene = example.scene(settings);
     long cycles = cycles(example, settings);
     BufferedWriter buffered = new BufferedWriter(trace);
-    try (Simulation sim = build(example, settings, scene, cycles, buffered)) {
+    try (Simulation sim = build(example, settings, scene, cycles, buffered, 1.0)) {
       Recording recording = new Recording(scene.params());
       Crew crew = example.start(sim, settings, new RecordingJournal(sim, recording));
       try {
@@ -241,7 +298,12 @@ final class SimRun {
   }
 
   private static Simulation build(
-      SimExample example, RunSettings settings, Scene scene, long cycles, Writer trace) {
+      SimExample example,
+      RunSettings settings,
+      Scene scene,
+      long cycles,
+      Writer trace,
+      double speed) {
     SimulationBuilder builder =
         Simulation.builder(scene)
             .seed(settings.seed())
@@ -256,7 +318,9 @@ final class SimRun {
       builder.traceAttribute(PACING, FREE);
     }
     if (settings.realTime()) {
-      builder.pacer(Pacer.realTime());
+      builder.pacer(
+          Pacer.realTime(
+              TimeSource.system(), java.util.concurrent.locks.LockSupport::parkNanos, speed));
     }
     return builder.build();
   }
@@ -268,7 +332,9 @@ final class SimRun {
       RunSettings settings,
       Recording recording,
       Progress progress,
-      Interruption interruption) {
+      Interruption interruption,
+      Watching watching,
+      double speed) {
     long period = settings.period().toNanos();
     long missed = 0;
     long i = 0;
@@ -277,7 +343,9 @@ final class SimRun {
       sim.runCycle();
       i++;
       recording.sample(sim);
-      if (settings.realTime() && progress.elapsedNanos() - first > sim.timeNanos() + period) {
+      watching.after(i - 1);
+      if (settings.realTime()
+          && (progress.elapsedNanos() - first) * speed > sim.timeNanos() + period) {
         missed++;
       }
       progress.update(i, sim.timeNanos());
@@ -289,5 +357,90 @@ final class SimRun {
     return period.toNanos() % 1_000_000 == 0
         ? Long.toString(period.toMillis())
         : String.format(Locale.ROOT, "%.3f", period.toNanos() / 1e6);
+  }
+
+  /**
+   * What a run tells its watcher after each cycle, and the robots' programs it writes into {@value
+   * #PROGRAMS} when they change. The metas' models are asked for every {@value #MODEL_EVERY}
+   * cycles, and a frame carries the last they answered.
+   */
+  private static final class Watching {
+    static final int MODEL_EVERY = 10;
+
+    private final RunWatcher watcher;
+    private final Simulation sim;
+    private final Scene scene;
+    private final @org.jspecify.annotations.Nullable Reflection reflection;
+    private final Writer programs;
+    private final java.util.Map<String, Object> models =
+        new java.util.concurrent.ConcurrentSkipListMap<>();
+    private java.util.Map<String, Object> last = java.util.Map.of();
+
+    Watching(
+        RunWatcher watcher,
+        Simulation sim,
+        Scene scene,
+        @org.jspecify.annotations.Nullable Reflection reflection,
+        Writer programs) {
+      this.watcher = watcher;
+      this.sim = sim;
+      this.scene = scene;
+      this.reflection = reflection;
+      this.programs = programs;
+    }
+
+    void after(long cycle) {
+      java.util.Map<String, Object> now =
+          reflection == null ? java.util.Map.of() : reflection.programs();
+      if (!now.equals(last)) {
+        now.forEach(
+            (robot, program) -> {
+              if (!program.equals(last.get(robot))) {
+                java.util.Map<String, Object> line = new java.util.LinkedHashMap<>();
+                line.put("cycle", cycle);
+                line.put("robot", robot);
+                if (program instanceof java.util.Map<?, ?> m) {
+                  line.putAll(cast(m));
+                }
+                write(LoopJson.write(line));
+              }
+            });
+        last = now;
+      }
+      if (watcher == RunWatcher.NONE) {
+        return;
+      }
+      if (reflection != null && cycle % MODEL_EVERY == 0) {
+        reflection.models(models::put);
+      }
+      List<org.armgals.maam.sim.AtomSensors> atoms = new java.util.ArrayList<>();
+      for (int id : sim.atomIds()) {
+        atoms.add(sim.atom(id).sensors());
+      }
+      watcher.frame(
+          cycle,
+          LiveJson.frame(
+              cycle,
+              atoms.isEmpty() ? sim.timeNanos() : atoms.get(0).timeNanos(),
+              atoms,
+              scene.params(),
+              now,
+              new java.util.LinkedHashMap<>(models)));
+    }
+
+    private static java.util.Map<String, Object> cast(java.util.Map<?, ?> m) {
+      java.util.Map<String, Object> copy = new java.util.LinkedHashMap<>();
+      m.forEach((k, v) -> copy.put(String.valueOf(k), v));
+      return copy;
+    }
+
+    private void write(String line) {
+      try {
+        programs.write(line);
+        programs.write('\n');
+      } catch (IOException e) {
+        throw new UncheckedIOException("cannot write " + PROGRAMS, e);
+      }
+    }
   }
 }

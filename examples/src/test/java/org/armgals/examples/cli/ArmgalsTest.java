@@ -229,7 +229,7 @@ class ArmgalsTest {
 
   @Test
   void everyCommandsHelpExitsZeroWithItsUsageAndTheExitStatuses() {
-    for (String command : List.of("list", "run", "replay", "new", "completion")) {
+    for (String command : List.of("list", "run", "replay", "view", "new", "completion")) {
       for (String help : List.of("--help", "-h")) {
         Result r = run(command, help);
         assertThat(r.status()).as("%s %s: %s", command, help, r.err()).isZero();
@@ -257,6 +257,7 @@ class ArmgalsTest {
           .containsPattern("(?m)^  list ")
           .containsPattern("(?m)^  run ")
           .containsPattern("(?m)^  replay ")
+          .containsPattern("(?m)^  view ")
           .containsPattern("(?m)^  new ")
           .containsPattern("(?m)^  completion ")
           .containsPattern("(?m)^  help ")
