@@ -6,7 +6,7 @@ import java.time.Duration;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import org.armgals.examples.cli.RunSettings;
+import org.armgals.examples.run.RunSettings;
 import org.armgals.examples.sim.Crew;
 import org.armgals.examples.sim.Journal;
 import org.armgals.examples.sim.MetaLevel;

@@ -16,9 +16,9 @@ import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.armgals.bench.Args;
-import org.armgals.examples.cli.RunSettings;
-import org.armgals.examples.cli.Summary;
 import org.armgals.examples.robots.Caterpillar;
+import org.armgals.examples.run.RunSettings;
+import org.armgals.examples.run.Summary;
 import org.armgals.examples.sim.SimExample;
 
 /**

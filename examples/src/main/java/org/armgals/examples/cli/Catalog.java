@@ -11,6 +11,7 @@ import org.armgals.examples.robots.EnergySaver;
 import org.armgals.examples.robots.ObstacleRobot;
 import org.armgals.examples.robots.Reconfigure;
 import org.armgals.examples.robots.Walker;
+import org.armgals.examples.run.Example;
 
 /** The examples {@code armgals} knows, in the order {@code armgals list} shows them. */
 public final class Catalog {

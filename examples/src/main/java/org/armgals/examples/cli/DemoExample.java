@@ -3,6 +3,9 @@ package org.armgals.examples.cli;
 import java.io.PrintStream;
 import java.util.List;
 import org.armgals.examples.Demo;
+import org.armgals.examples.run.Example;
+import org.armgals.examples.run.RunSettings;
+import org.armgals.examples.run.Summary;
 
 /** The active-object demo, as {@code armgals run demo}. */
 final class DemoExample implements Example {

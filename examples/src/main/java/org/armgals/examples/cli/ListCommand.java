@@ -1,6 +1,7 @@
 package org.armgals.examples.cli;
 
 import java.io.PrintStream;
+import org.armgals.examples.run.Example;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 

@@ -10,6 +10,7 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.armgals.examples.run.Example;
 import org.armgals.examples.sim.Replay;
 import org.armgals.examples.sim.SimExample;
 import picocli.CommandLine.Command;

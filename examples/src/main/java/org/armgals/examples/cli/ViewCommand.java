@@ -7,6 +7,7 @@ import java.util.concurrent.Callable;
 import org.armgals.active.TimeSource;
 import org.armgals.examples.live.LiveServer;
 import org.armgals.examples.live.Player;
+import org.armgals.examples.run.Example;
 import org.armgals.examples.sim.Playback;
 import org.armgals.examples.sim.Replay;
 import org.armgals.examples.sim.SimExample;

@@ -4,7 +4,7 @@ import static java.util.Objects.requireNonNull;
 
 import java.time.Duration;
 import java.util.Locale;
-import org.armgals.examples.cli.RunSettings;
+import org.armgals.examples.run.RunSettings;
 import org.armgals.examples.sim.Crew;
 import org.armgals.examples.sim.Journal;
 import org.armgals.examples.sim.SimExample;

@@ -16,7 +16,7 @@ import java.util.function.BooleanSupplier;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.TimeSource;
 import org.armgals.active.jms.JmsTransport;
-import org.armgals.examples.cli.Summary;
+import org.armgals.examples.run.Summary;
 import org.armgals.examples.sim.Journal;
 import org.armgals.examples.sim.LoopRecord;
 import org.armgals.kernel.Entity;

@@ -2,7 +2,7 @@ package org.armgals.examples.robots;
 
 import java.util.List;
 import java.util.Locale;
-import org.armgals.examples.cli.Summary;
+import org.armgals.examples.run.Summary;
 import org.armgals.examples.sim.Crew;
 import org.armgals.examples.sim.Reflection;
 import org.armgals.maam.Schema;

@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.TreeSet;
 import java.util.stream.Collectors;
-import org.armgals.examples.cli.Summary;
+import org.armgals.examples.run.Summary;
 import org.armgals.examples.sim.Crew;
 import org.armgals.examples.sim.Reflection;
 import org.armgals.maam.Schema;

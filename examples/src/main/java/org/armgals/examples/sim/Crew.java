@@ -1,7 +1,7 @@
 package org.armgals.examples.sim;
 
 import java.util.List;
-import org.armgals.examples.cli.Summary;
+import org.armgals.examples.run.Summary;
 
 /**
  * What drives one run of a {@link SimExample}: its robots, meta levels and any runtime they need.

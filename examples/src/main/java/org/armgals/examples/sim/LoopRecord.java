@@ -11,8 +11,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.LongSupplier;
 import org.armgals.active.TimeSource;
-import org.armgals.examples.cli.RunSettings;
-import org.armgals.examples.cli.Summary;
+import org.armgals.examples.run.RunSettings;
+import org.armgals.examples.run.Summary;
 import org.armgals.kernel.ReflectionEvent;
 import org.armgals.kernel.spi.ReflectionListener;
 

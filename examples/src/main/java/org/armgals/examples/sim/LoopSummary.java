@@ -5,8 +5,8 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import org.armgals.examples.cli.RunSettings;
-import org.armgals.examples.cli.Summary;
+import org.armgals.examples.run.RunSettings;
+import org.armgals.examples.run.Summary;
 
 /**
  * What a run's summary says of its reflective loop, from the loop's record ({@link LoopRecorder}):

@@ -2,7 +2,7 @@ package org.armgals.examples.sim;
 
 import java.util.List;
 import java.util.Map;
-import org.armgals.examples.cli.Summary;
+import org.armgals.examples.run.Summary;
 import org.armgals.kernel.Kernel;
 import org.armgals.kernel.StructuralMeta;
 import org.armgals.maam.BMetaRobot;

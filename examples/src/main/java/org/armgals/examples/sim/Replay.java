@@ -17,7 +17,7 @@ import java.util.Optional;
 import java.util.OptionalLong;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import org.armgals.examples.cli.RunSettings;
+import org.armgals.examples.run.RunSettings;
 import org.jspecify.annotations.Nullable;
 
 /**

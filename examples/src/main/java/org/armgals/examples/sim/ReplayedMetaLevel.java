@@ -9,7 +9,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.armgals.active.Address;
-import org.armgals.examples.cli.Summary;
+import org.armgals.examples.run.Summary;
 import org.armgals.kernel.Adaptation;
 import org.armgals.kernel.Damping;
 import org.armgals.kernel.Kernel;

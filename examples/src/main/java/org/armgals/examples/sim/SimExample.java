@@ -2,9 +2,9 @@ package org.armgals.examples.sim;
 
 import java.io.PrintStream;
 import java.time.Duration;
-import org.armgals.examples.cli.Example;
-import org.armgals.examples.cli.RunSettings;
-import org.armgals.examples.cli.Summary;
+import org.armgals.examples.run.Example;
+import org.armgals.examples.run.RunSettings;
+import org.armgals.examples.run.Summary;
 import org.armgals.maam.sim.Scene;
 import org.armgals.maam.sim.Simulation;
 

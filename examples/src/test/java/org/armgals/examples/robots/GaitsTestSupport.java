@@ -7,7 +7,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.OptionalLong;
 import java.util.function.LongSupplier;
-import org.armgals.examples.cli.RunSettings;
+import org.armgals.examples.run.RunSettings;
 import org.armgals.examples.sim.Journal;
 
 /** What the walker's and the caterpillar's tests share: settings and a journal that remembers. */

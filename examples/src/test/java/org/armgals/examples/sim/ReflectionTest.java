@@ -8,9 +8,9 @@ import java.time.Duration;
 import java.util.List;
 import java.util.Optional;
 import java.util.OptionalLong;
-import org.armgals.examples.cli.RunSettings;
-import org.armgals.examples.cli.Summary;
 import org.armgals.examples.robots.Caterpillar;
+import org.armgals.examples.run.RunSettings;
+import org.armgals.examples.run.Summary;
 import org.armgals.maam.sim.Simulation;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -94,7 +94,7 @@ class ReflectionTest {
   @Test
   void everyExampleWithAMetaLevelIsFoundByTheMetaLevelsJvm() {
     RunSettings settings = settings(java.nio.file.Path.of("unused"), 1);
-    for (org.armgals.examples.cli.Example e : org.armgals.examples.cli.Catalog.standard().all()) {
+    for (org.armgals.examples.run.Example e : org.armgals.examples.cli.Catalog.standard().all()) {
       if (e instanceof SimExample sim && sim.metaLevel(settings).isPresent()) {
         assertThat(MetaMain.find(e.name())).as(e.name()).isPresent();
       }

@@ -2,8 +2,8 @@ package org.armgals.examples.sim;
 
 import java.time.Duration;
 import java.util.List;
-import org.armgals.examples.cli.RunSettings;
-import org.armgals.examples.cli.Summary;
+import org.armgals.examples.run.RunSettings;
+import org.armgals.examples.run.Summary;
 import org.armgals.maam.sim.Scene;
 import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;

@@ -1,8 +1,8 @@
-package org.armgals.examples.cli;
+package org.armgals.examples.run;
 
 /**
  * A run stopped before its end because it was asked to (Ctrl-C), having kept what it had and said
- * so: {@code armgals} exits with {@link Armgals#INTERRUPTED} and prints nothing more.
+ * so: {@code armgals} exits with {@code Armgals.INTERRUPTED} (130) and prints nothing more.
  */
 public final class RunInterrupted extends RuntimeException {
   private static final long serialVersionUID = 1L;

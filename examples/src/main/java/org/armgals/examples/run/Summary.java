@@ -1,4 +1,4 @@
-package org.armgals.examples.cli;
+package org.armgals.examples.run;
 
 import static java.util.Objects.requireNonNull;
 
