@@ -4,7 +4,7 @@ import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
-import org.HdrHistogram.Histogram;
+import org.armgals.active.spi.CycleRecorder;
 
 /**
  * What both clocks share: the registered objects, the two-phase release of an instant, and the
@@ -22,12 +22,11 @@ final class ClockSupport {
   }
 
   private final CopyOnWriteArrayList<Core<?>> objects = new CopyOnWriteArrayList<>();
-  private final Histogram jitter = new Histogram(Duration.ofSeconds(10).toNanos(), 3);
-  private long instants;
-  private long overruns;
-  private long firstRelease;
-  private long lastRelease;
-  private long cycleMax;
+  private final CycleRecorder figures;
+
+  ClockSupport(Duration period) {
+    this.figures = new CycleRecorder(period);
+  }
 
   void register(Core<?> core) {
     objects.add(core);
@@ -73,36 +72,24 @@ final class ClockSupport {
   }
 
   /** Records one release: its time, its lateness behind schedule, how long the instant took. */
-  synchronized void record(long releasedAt, long lateness, long cycleNanos, boolean overrun) {
-    if (instants == 0) {
-      firstRelease = releasedAt;
-    }
-    lastRelease = releasedAt;
-    instants++;
-    jitter.recordValue(Math.min(Math.max(lateness, 0), jitter.getHighestTrackableValue()));
-    cycleMax = Math.max(cycleMax, cycleNanos);
-    if (overrun) {
-      overruns++;
-    }
+  void record(long releasedAt, long lateness, long cycleNanos) {
+    figures.record(releasedAt, lateness, cycleNanos);
   }
 
-  synchronized long overruns() {
-    return overruns;
+  long overruns() {
+    return figures.overruns();
   }
 
-  synchronized ClockStats stats() {
-    Duration mean =
-        instants < 2
-            ? Duration.ZERO
-            : Duration.ofNanos((lastRelease - firstRelease) / (instants - 1));
+  ClockStats stats() {
+    CycleRecorder.Figures f = figures.snapshot();
     return new ClockStats(
-        instants,
-        overruns,
-        mean,
-        Duration.ofNanos(jitter.getValueAtPercentile(50)),
-        Duration.ofNanos(jitter.getValueAtPercentile(99)),
-        Duration.ofNanos(jitter.getMaxValue()),
-        Duration.ofNanos(cycleMax));
+        f.instants(),
+        f.overruns(),
+        f.meanPeriod(),
+        f.jitterP50(),
+        f.jitterP99(),
+        f.jitterMax(),
+        f.cycleMax());
   }
 
   static long positiveNanos(Duration period) {

@@ -8,7 +8,7 @@ import java.util.function.BooleanSupplier;
 
 /** The manual clock: instants stepped by the caller's thread; virtual time = instants × period. */
 final class ManualClockImpl implements ManualClock, ClockSupport.Owner {
-  private final ClockSupport support = new ClockSupport();
+  private final ClockSupport support;
   private final Duration period;
   private final long periodNanos;
   private final ReentrantLock stepping = new ReentrantLock();
@@ -19,6 +19,7 @@ final class ManualClockImpl implements ManualClock, ClockSupport.Owner {
 
   ManualClockImpl(Duration period) {
     this.periodNanos = ClockSupport.positiveNanos(period);
+    this.support = new ClockSupport(period);
     this.period = period;
   }
 
@@ -54,7 +55,7 @@ final class ManualClockImpl implements ManualClock, ClockSupport.Owner {
       }
       instant = k;
       support.release(k);
-      support.record(k * periodNanos, 0, 0, false);
+      support.record(k * periodNanos, 0, 0);
       return k;
     } finally {
       stepping.unlock();

@@ -15,7 +15,7 @@ final class RealTimeClockImpl implements RealTimeClock, ClockSupport.Owner {
   private static final Logger LOG = LoggerFactory.getLogger(RealTimeClockImpl.class);
   static final long SPIN_NANOS = 100_000;
 
-  private final ClockSupport support = new ClockSupport();
+  private final ClockSupport support;
   private final Duration period;
   private final long periodNanos;
   private final TimeSource time;
@@ -26,6 +26,7 @@ final class RealTimeClockImpl implements RealTimeClock, ClockSupport.Owner {
 
   RealTimeClockImpl(Duration period, TimeSource time) {
     this.periodNanos = ClockSupport.positiveNanos(period);
+    this.support = new ClockSupport(period);
     this.period = period;
     this.time = time;
   }
@@ -68,7 +69,7 @@ final class RealTimeClockImpl implements RealTimeClock, ClockSupport.Owner {
       long end = time.nanoTime();
       long nextDue = due + periodNanos;
       boolean overrun = end > nextDue;
-      support.record(released - origin, released - due, end - released, overrun);
+      support.record(released - origin, released - due, end - released);
       k++;
       if (overrun) {
         k = (end - origin) / periodNanos + 1;

@@ -16,6 +16,7 @@ import org.armgals.active.Clock;
 import org.armgals.active.ManualClock;
 import org.armgals.active.ObjectConfig;
 import org.armgals.active.TimeSource;
+import org.armgals.active.spi.CycleRecorder;
 import org.armgals.kernel.AdaptationPoint;
 import org.armgals.kernel.BehavioralMeta;
 import org.armgals.kernel.Entity;
@@ -44,7 +45,7 @@ final class IslandImpl implements Island {
   private final Pacing pacing;
   private final ObjectConfig config;
   private final ManualClock clock;
-  private final StatsRecorder stats;
+  private final CycleRecorder stats;
   private final Trace trace;
   private final CopyOnWriteArrayList<EntityImpl<?>> entities = new CopyOnWriteArrayList<>();
   private final ConcurrentLinkedQueue<PendingAdaptation> requests = new ConcurrentLinkedQueue<>();
@@ -64,7 +65,7 @@ final class IslandImpl implements Island {
     this.pacing = pacing;
     this.clock = Clock.manual(b.period);
     this.config = ObjectConfig.synchronous(clock).withCapacity(b.capacity);
-    this.stats = new StatsRecorder(periodNanos);
+    this.stats = new CycleRecorder(period);
     this.trace = new Trace(b.tracing);
     this.mbean = b.jmx ? IslandJmx.register(this, runtime.name()) : null;
   }
@@ -331,7 +332,20 @@ final class IslandImpl implements Island {
 
   @Override
   public IslandStats stats() {
-    return stats.snapshot();
+    CycleRecorder.Figures f = stats.snapshot();
+    return new IslandStats(
+        f.instants(),
+        f.overruns(),
+        f.skipped(),
+        f.meanPeriod(),
+        f.jitterP50(),
+        f.jitterP99(),
+        f.jitterMax(),
+        f.cycleMax(),
+        f.adaptations(),
+        f.adaptationMax(),
+        f.adaptationOverruns(),
+        f.failures());
   }
 
   @Override

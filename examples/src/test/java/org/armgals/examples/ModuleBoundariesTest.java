@@ -60,6 +60,7 @@ import org.armgals.active.jms.JmsTransport;
 import org.armgals.active.jms.Presence;
 import org.armgals.active.jms.Subscription;
 import org.armgals.active.spi.AllowList;
+import org.armgals.active.spi.CycleRecorder;
 import org.armgals.active.spi.ErrorHandler;
 import org.armgals.active.spi.NameService;
 import org.armgals.active.spi.ObjectListener;
@@ -148,6 +149,8 @@ class ModuleBoundariesTest {
           TransportStats.class,
           WaitCycleException.class,
           AllowList.class,
+          CycleRecorder.class,
+          CycleRecorder.Figures.class,
           ErrorHandler.class,
           NameService.class,
           ObjectListener.class,
