@@ -8,28 +8,25 @@ import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
-import org.armgals.active.EmbeddedBroker;
 import org.armgals.presence.PresenceEvent.Joined;
 import org.armgals.presence.PresenceEvent.Left;
 import org.armgals.presence.PresenceEvent.Lost;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
+import org.armgals.testkit.BrokerTest;
+import org.armgals.testkit.TestBroker;
+import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
+/** Presences on the testkit's embedded broker, on topics of each test's own. */
+@BrokerTest
 class PresenceTest {
   private static final long WAIT_SECONDS = 10;
   private static final Duration PERIOD = Duration.ofMillis(100);
 
-  static EmbeddedBroker broker;
+  TestBroker broker;
 
-  @BeforeAll
-  static void startBroker() {
-    broker = EmbeddedBroker.start();
-  }
-
-  @AfterAll
-  static void stopBroker() {
-    broker.close();
+  @BeforeEach
+  void broker(TestBroker broker) {
+    this.broker = broker;
   }
 
   /** What a listener heard, to wait on. */
@@ -43,10 +40,10 @@ class PresenceTest {
     }
   }
 
-  private static Presence.Builder builder(String prefix, String runtime, Heard heard) {
+  private Presence.Builder builder(String prefix, String runtime, Heard heard) {
     return Presence.builder()
-        .broker(broker.inVmUrl())
-        .prefix(prefix)
+        .broker(broker.broker().inVmUrl())
+        .prefix(broker.prefix() + "-" + prefix)
         .runtime(runtime)
         .period(PERIOD)
         .listener(heard.events::add);
@@ -114,8 +111,8 @@ class PresenceTest {
     // the second one has heard an event, the first one's failure on it has been counted.
     try (Presence a =
             Presence.builder()
-                .broker(broker.inVmUrl())
-                .prefix("throw")
+                .broker(broker.broker().inVmUrl())
+                .prefix(broker.prefix() + "-throw")
                 .runtime("a")
                 .period(PERIOD)
                 .listener(

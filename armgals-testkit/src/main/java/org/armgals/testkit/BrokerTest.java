@@ -25,4 +25,10 @@ public @interface BrokerTest {
    * ({@link TestBroker#prefix()}), which isolates them as well at a fraction of the cost.
    */
   boolean brokerPerTest() default false;
+
+  /**
+   * Whether the test fails when an object of a runtime made by {@link TestBroker#runtime} failed,
+   * naming every failure; default true. A test that provokes failures on purpose turns it off.
+   */
+  boolean failOnObjectFailures() default true;
 }

@@ -6,6 +6,7 @@ import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.atomic.AtomicLong;
 import org.armgals.active.EmbeddedBroker;
 import org.junit.jupiter.api.extension.AfterAllCallback;
@@ -105,7 +106,12 @@ public final class EmbeddedBrokerExtension
             + context.getRequiredTestMethod().getName().replaceAll("[^A-Za-z0-9_-]", "_")
             + "-"
             + RUNS.incrementAndGet();
-    return new TestBroker(broker, prefix);
+    boolean failOnObjectFailures =
+        AnnotationSupport.findAnnotation(context.getRequiredTestMethod(), BrokerTest.class)
+            .or(() -> classAnnotation(context))
+            .map(BrokerTest::failOnObjectFailures)
+            .orElse(true);
+    return new TestBroker(broker, prefix, failOnObjectFailures);
   }
 
   /** The context of the test's class (the innermost, for a nested test). */
@@ -118,13 +124,18 @@ public final class EmbeddedBrokerExtension
   }
 
   private static boolean perTest(ExtensionContext context) {
+    return classAnnotation(context).map(BrokerTest::brokerPerTest).orElse(false);
+  }
+
+  /** The annotation of the test's class, or of the nearest enclosing class that has one. */
+  private static Optional<BrokerTest> classAnnotation(ExtensionContext context) {
     for (Class<?> c = context.getTestClass().orElse(null); c != null; c = c.getEnclosingClass()) {
-      var found = AnnotationSupport.findAnnotation(c, BrokerTest.class);
+      Optional<BrokerTest> found = AnnotationSupport.findAnnotation(c, BrokerTest.class);
       if (found.isPresent()) {
-        return found.get().brokerPerTest();
+        return found;
       }
     }
-    return false;
+    return Optional.empty();
   }
 
   /**

@@ -24,12 +24,14 @@ import org.armgals.active.JmsTransport;
 public final class TestBroker {
   private final EmbeddedBroker broker;
   private final String prefix;
+  private final boolean failOnObjectFailures;
   private final List<RuntimeUnderTest> runtimes = new ArrayList<>();
   private final List<JmsTransport> transports = new ArrayList<>();
 
-  TestBroker(EmbeddedBroker broker, String prefix) {
+  TestBroker(EmbeddedBroker broker, String prefix, boolean failOnObjectFailures) {
     this.broker = broker;
     this.prefix = prefix;
+    this.failOnObjectFailures = failOnObjectFailures;
   }
 
   /** The broker. */
@@ -69,7 +71,8 @@ public final class TestBroker {
   /**
    * A runtime named {@code name} on {@code transport}, with 2 workers and no MBean, shut down after
    * the test like the runtime of {@link ActiveRuntimeExtension}: the test fails if one of its
-   * objects failed or if it did not shut down cleanly.
+   * objects failed (unless {@link BrokerTest#failOnObjectFailures()} is off) or if it did not shut
+   * down cleanly.
    */
   public ActiveRuntime runtime(String name, JmsTransport transport) {
     return runtime(name, transport, b -> b);
@@ -87,7 +90,7 @@ public final class TestBroker {
     RuntimeUnderTest r =
         new RuntimeUnderTest(
             settings.apply(ActiveRuntime.builder().name(name).workers(2).transport(transport)),
-            true,
+            failOnObjectFailures,
             true);
     runtimes.add(r);
     return r.runtime;
