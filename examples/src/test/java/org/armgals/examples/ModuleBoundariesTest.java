@@ -88,6 +88,8 @@ class ModuleBoundariesTest {
           "org.armgals.gals",
           "org.armgals.maam",
           "org.armgals.maam.sim",
+          "org.armgals.testkit",
+          "org.armgals.testkit.maam",
           "org.armgals.examples",
           "org.armgals.bench");
 
@@ -188,7 +190,9 @@ class ModuleBoundariesTest {
     "arm-gals, org.armgals.gals",
     "arm-presence, org.armgals.presence",
     "maam-framework, org.armgals.maam",
-    "maam-sim, org.armgals.maam.sim"
+    "maam-sim, org.armgals.maam.sim",
+    "armgals-testkit, org.armgals.testkit",
+    "armgals-testkit-maam, org.armgals.testkit.maam"
   })
   void eachModuleExportsOnlyItsListedApi(String module, String root) throws IOException {
     Set<String> api = apiList(module);
@@ -213,7 +217,9 @@ class ModuleBoundariesTest {
         "org.armgals.kernel",
         "org.armgals.gals",
         "org.armgals.maam",
-        "org.armgals.maam.sim"
+        "org.armgals.maam.sim",
+        "org.armgals.testkit",
+        "org.armgals.testkit.maam"
       })
   void noModulesPackagesFormACycle(String root) {
     List<String> nested = MODULE_ROOTS.stream().filter(r -> r.startsWith(root + ".")).toList();
