@@ -11,8 +11,10 @@ import org.junit.jupiter.api.extension.ExtendWith;
 /**
  * A test of several runtimes on one embedded broker: its methods (and their {@code @BeforeEach} and
  * {@code @AfterEach} methods) may take a {@link TestBroker}, from {@link EmbeddedBrokerExtension}.
+ * On a method, the annotation's {@link #failOnObjectFailures()} replaces the class's; {@link
+ * #brokerPerTest()} is read from the class only.
  */
-@Target({ElementType.TYPE, ElementType.ANNOTATION_TYPE})
+@Target({ElementType.TYPE, ElementType.METHOD, ElementType.ANNOTATION_TYPE})
 @Retention(RetentionPolicy.RUNTIME)
 @Documented
 @Inherited

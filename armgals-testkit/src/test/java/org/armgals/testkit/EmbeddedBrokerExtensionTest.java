@@ -108,6 +108,22 @@ class EmbeddedBrokerExtensionTest {
         .hasMessageContaining("an echo takes a Ping");
   }
 
+  @BrokerTest
+  static class ARemoteObjectFailsOnPurpose {
+    @BrokerTest(failOnObjectFailures = false)
+    @Test
+    void fails(TestBroker broker) {
+      ActiveRuntime west = broker.runtime("west", broker.transport());
+      ActiveObject<Echo> echo = west.spawn(new Echo(west.spawn(new Object())));
+      echo.send(new Pong(echo.address(), 1));
+    }
+  }
+
+  @Test
+  void aTestThatFailsObjectsOnPurposeSaysSoOnItsMethod() {
+    Fixtures.run(ARemoteObjectFailsOnPurpose.class).assertStatistics(s -> s.succeeded(1));
+  }
+
   static boolean accepts(URI url) throws IOException {
     try (Socket s = new Socket()) {
       s.connect(new InetSocketAddress(url.getHost(), url.getPort()), 2_000);
