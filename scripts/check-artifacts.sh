@@ -19,11 +19,14 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 version="$(sed -n 's:^  <version>\(.*\)</version>:\1:p' "$root/pom.xml" | head -1)"
 work="${CHECK_ARTIFACTS_DIR:-$(mktemp -d "${TMPDIR:-/tmp}/armgals-check-artifacts.XXXXXX")}"
-library=(arm-active arm-representation arm-kernel arm-gals maam-framework maam-sim examples)
+library=(arm-active arm-representation arm-kernel arm-gals maam-framework maam-sim
+  armgals-testkit armgals-testkit-maam examples)
 declare -A module_name=(
   [arm-active]=org.armgals.active [arm-representation]=org.armgals.representation
   [arm-kernel]=org.armgals.kernel [arm-gals]=org.armgals.gals
-  [maam-framework]=org.armgals.maam [maam-sim]=org.armgals.maam.sim [examples]=org.armgals.examples)
+  [maam-framework]=org.armgals.maam [maam-sim]=org.armgals.maam.sim
+  [armgals-testkit]=org.armgals.testkit [armgals-testkit-maam]=org.armgals.testkit.maam
+  [examples]=org.armgals.examples)
 failures=0
 
 fail() {

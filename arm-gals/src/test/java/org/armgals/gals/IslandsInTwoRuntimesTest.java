@@ -12,22 +12,23 @@ import java.util.function.BooleanSupplier;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
 import org.armgals.active.Request;
-import org.armgals.active.ShutdownMode;
-import org.armgals.active.jms.EmbeddedBroker;
 import org.armgals.active.jms.JmsTransport;
+import org.armgals.testkit.BrokerTest;
+import org.armgals.testkit.TestBroker;
 import org.jspecify.annotations.Nullable;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 /**
- * Islands in two runtimes, each with its own JMS transport on one embedded broker, exchanging
- * events with {@link CycleContext#emit(Address, Object)}.
+ * Islands in two runtimes, each with its own JMS transport on one embedded broker (the testkit's),
+ * exchanging events with {@link CycleContext#emit(Address, Object)}.
  */
+@BrokerTest
 class IslandsInTwoRuntimesTest {
   static final Duration WAIT = Duration.ofSeconds(10);
-  static EmbeddedBroker broker;
   static final AtomicInteger PREFIXES = new AtomicInteger();
+
+  TestBroker broker;
 
   /** A payload allowed on the wire. */
   public record Tick(String from, long n) {}
@@ -39,17 +40,15 @@ class IslandsInTwoRuntimesTest {
   /** A payload nobody allowed. */
   public record Secret(String what) {}
 
-  @BeforeAll
-  static void startBroker() {
-    broker = EmbeddedBroker.start();
+  @BeforeEach
+  void broker(TestBroker broker) {
+    this.broker = broker;
   }
 
-  @AfterAll
-  static void stopBroker() {
-    broker.close();
-  }
-
-  /** Two runtimes ("east", "west") on one broker, an island in each. */
+  /**
+   * Two runtimes ("east", "west") on one broker, an island in each, on topics of their own; the
+   * testkit shuts the runtimes down and closes the transports after the test.
+   */
   static final class TwoSides implements AutoCloseable {
     final JmsTransport eastTransport;
     final JmsTransport westTransport;
@@ -58,32 +57,22 @@ class IslandsInTwoRuntimesTest {
     final Island east;
     final Island west;
 
-    TwoSides(Duration eastPeriod, Duration westPeriod) {
-      JmsTransport.Builder b =
-          JmsTransport.builder()
-              .broker(broker.inVmUrl())
-              .prefix("xisl-" + PREFIXES.incrementAndGet())
-              .allow(Emission.class, Tick.class, Level.class);
-      eastTransport = b.build();
-      westTransport = b.build();
-      eastRuntime = runtime("east", eastTransport);
-      westRuntime = runtime("west", westTransport);
+    TwoSides(TestBroker broker, Duration eastPeriod, Duration westPeriod) {
+      String prefix = broker.prefix() + "/" + PREFIXES.incrementAndGet();
+      eastTransport =
+          broker.transport(b -> b.prefix(prefix).allow(Emission.class, Tick.class, Level.class));
+      westTransport =
+          broker.transport(b -> b.prefix(prefix).allow(Emission.class, Tick.class, Level.class));
+      eastRuntime = broker.runtime("east", eastTransport);
+      westRuntime = broker.runtime("west", westTransport);
       east = Island.builder("east", eastRuntime).period(eastPeriod).jmx(false).build();
       west = Island.builder("west", westRuntime).period(westPeriod).jmx(false).build();
-    }
-
-    private static ActiveRuntime runtime(String name, JmsTransport t) {
-      return ActiveRuntime.builder().name(name).workers(2).jmx(false).transport(t).build();
     }
 
     @Override
     public void close() {
       east.close();
       west.close();
-      eastRuntime.shutdown(ShutdownMode.CANCEL, WAIT);
-      westRuntime.shutdown(ShutdownMode.CANCEL, WAIT);
-      eastTransport.close();
-      westTransport.close();
     }
   }
 
@@ -121,7 +110,7 @@ class IslandsInTwoRuntimesTest {
 
   @Test
   void startedIslandsWithDifferentPeriodsExchangeEventsInSendOrder() throws Exception {
-    try (TwoSides s = new TwoSides(Duration.ofMillis(2), Duration.ofMillis(5))) {
+    try (TwoSides s = new TwoSides(broker, Duration.ofMillis(2), Duration.ofMillis(5))) {
       Log eastLog = new Log();
       Log westLog = new Log();
       ReactiveEntity<Log> e = s.east.spawn("e", eastLog, recorder("e", true));
@@ -159,7 +148,7 @@ class IslandsInTwoRuntimesTest {
 
   @Test
   void anEventFromAnotherRuntimeIsTakenAtTheFirstReleaseAfterItArrives() {
-    try (TwoSides s = new TwoSides(Duration.ofMillis(2), Duration.ofMillis(3))) {
+    try (TwoSides s = new TwoSides(broker, Duration.ofMillis(2), Duration.ofMillis(3))) {
       Log westLog = new Log();
       ReactiveEntity<Log> w = s.west.spawn("w", westLog, recorder("w", false));
       Log eastLog = new Log();
@@ -182,7 +171,7 @@ class IslandsInTwoRuntimesTest {
 
   @Test
   void aPayloadNotOnTheAllowListIsRefusedAtTheSender() {
-    try (TwoSides s = new TwoSides(Duration.ofMillis(1), Duration.ofMillis(1))) {
+    try (TwoSides s = new TwoSides(broker, Duration.ofMillis(1), Duration.ofMillis(1))) {
       Log westLog = new Log();
       ReactiveEntity<Log> w = s.west.spawn("w", westLog, recorder("w", false));
       Log eastLog = new Log();
@@ -240,7 +229,7 @@ class IslandsInTwoRuntimesTest {
 
   @Test
   void aRequestToAnEntityOfAnotherRuntimeComesBackAsAnAwaitedValue() {
-    try (TwoSides s = new TwoSides(Duration.ofMillis(1), Duration.ofMillis(1))) {
+    try (TwoSides s = new TwoSides(broker, Duration.ofMillis(1), Duration.ofMillis(1))) {
       ReactiveEntity<Log> tank = s.west.spawn("tank", new Log(), recorder("tank", false));
       tank.answerWith((state, request) -> ((Level) request).of().length() * 10);
       s.west.step(); // applies answerWith
@@ -254,7 +243,7 @@ class IslandsInTwoRuntimesTest {
 
   @Test
   void askByAddressWorksInOneRuntimeToo() {
-    try (TwoSides s = new TwoSides(Duration.ofMillis(1), Duration.ofMillis(1))) {
+    try (TwoSides s = new TwoSides(broker, Duration.ofMillis(1), Duration.ofMillis(1))) {
       Island other = Island.builder("other", s.eastRuntime).jmx(false).build();
       try (other) {
         ReactiveEntity<Log> tank = other.spawn("tank", new Log(), recorder("tank", false));
@@ -282,9 +271,10 @@ class IslandsInTwoRuntimesTest {
     }
   }
 
+  @BrokerTest(failOnObjectFailures = false) // the mute entity fails on the request, on purpose
   @Test
   void aRequestToAnEntityThatAnswersNothingFails() {
-    try (TwoSides s = new TwoSides(Duration.ofMillis(1), Duration.ofMillis(1))) {
+    try (TwoSides s = new TwoSides(broker, Duration.ofMillis(1), Duration.ofMillis(1))) {
       ReactiveEntity<Log> mute = s.west.spawn("mute", new Log(), recorder("mute", false));
 
       AwaitedValue<Integer> level = askAcross(s, mute);
@@ -308,8 +298,8 @@ class IslandsInTwoRuntimesTest {
    * the test waits until what was emitted has arrived, so each release takes exactly what was sent
    * before it.
    */
-  private static List<List<String>> pingPong() {
-    try (TwoSides s = new TwoSides(Duration.ofMillis(1), Duration.ofMillis(2))) {
+  private List<List<String>> pingPong() {
+    try (TwoSides s = new TwoSides(broker, Duration.ofMillis(1), Duration.ofMillis(2))) {
       Log eastLog = new Log();
       Log westLog = new Log();
       ReactiveEntity<Log> e = s.east.spawn("e", eastLog, recorder("e", true));

@@ -3,6 +3,7 @@ package org.armgals.kernel;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import org.armgals.testkit.BrokerTest;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
@@ -46,6 +47,7 @@ class EntityHandleContractTest extends TwoRuntimesFixture {
     assertThat(e.state().observe()).containsEntry("battery", 0.85).containsEntry("mode", "eco");
   }
 
+  @BrokerTest(failOnObjectFailures = false) // fails on purpose
   @ParameterizedTest
   @ValueSource(strings = {"local", "remote"})
   void aCallOfAnUnknownBehaviorFailsNamingIt(String which) {

@@ -31,7 +31,7 @@ class RuntimeLostTest extends TwoRuntimesFixture {
 
   @BeforeEach
   void presences() throws Exception {
-    String prefix = "lost-" + RUNS.incrementAndGet();
+    String prefix = broker.prefix() + "-lost";
     basePresence = SteppedPresence.start(presence(prefix, "base"));
     // The kernel's listener first: once the test hears an event, the kernel has handled it.
     metaPresence =
@@ -51,7 +51,7 @@ class RuntimeLostTest extends TwoRuntimesFixture {
 
   private Presence.Builder presence(String prefix, String runtime) {
     return Presence.builder()
-        .broker(broker.inVmUrl())
+        .broker(broker.broker().inVmUrl())
         .prefix(prefix)
         .runtime(runtime)
         .period(PERIOD)

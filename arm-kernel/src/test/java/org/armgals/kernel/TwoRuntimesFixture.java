@@ -4,24 +4,23 @@ import java.time.Duration;
 import java.util.function.Predicate;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
-import org.armgals.active.jms.EmbeddedBroker;
 import org.armgals.active.jms.JmsTransport;
 import org.armgals.representation.p.PState;
-import org.junit.jupiter.api.AfterAll;
+import org.armgals.testkit.BrokerTest;
+import org.armgals.testkit.TestBroker;
 import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
-import org.junit.jupiter.api.TestInfo;
 
 /**
- * Two runtimes on one embedded Artemis broker, each with its own JMS transport and kernel, and the
- * battery robot's kind known to both (decision 0024); a fresh topic prefix per test.
+ * Two runtimes on one embedded Artemis broker (the testkit's, one per class), each with its own JMS
+ * transport and kernel, and the battery robot's kind known to both (decision 0024); a fresh topic
+ * prefix per test. The testkit closes the runtimes and transports after each test.
  */
+@BrokerTest
 abstract class TwoRuntimesFixture {
   static final Duration WAIT = Duration.ofSeconds(10);
-  static final java.util.concurrent.atomic.AtomicInteger RUNS =
-      new java.util.concurrent.atomic.AtomicInteger();
-  static EmbeddedBroker broker;
+
+  TestBroker broker;
 
   JmsTransport baseTransport;
   JmsTransport metaTransport;
@@ -33,24 +32,13 @@ abstract class TwoRuntimesFixture {
   StructuralMeta<PState> metaRobots;
   final ManualTime time = new ManualTime();
 
-  @BeforeAll
-  static void startBroker() {
-    broker = EmbeddedBroker.start();
-  }
-
-  @AfterAll
-  static void stopBroker() {
-    broker.close();
-  }
-
   @BeforeEach
-  void twoRuntimes(TestInfo test) {
-    String prefix =
-        "kernel-" + test.getTestMethod().orElseThrow().getName() + "-" + RUNS.incrementAndGet();
-    baseTransport = transport(prefix);
-    metaTransport = transport(prefix);
-    baseRuntime = runtime("base", baseTransport);
-    metaRuntime = runtime("meta", metaTransport);
+  void twoRuntimes(TestBroker broker) {
+    this.broker = broker;
+    baseTransport = broker.transport(Kernel::allowKernelEvents);
+    metaTransport = broker.transport(Kernel::allowKernelEvents);
+    baseRuntime = broker.runtime("base", baseTransport);
+    metaRuntime = broker.runtime("meta", metaTransport);
     KernelOptions options = new KernelOptions(time, Duration.ofMillis(100), false);
     baseKernel = StructuralMeta.bootstrap(baseRuntime, options);
     metaKernel = StructuralMeta.bootstrap(metaRuntime, options);
@@ -62,22 +50,9 @@ abstract class TwoRuntimesFixture {
   }
 
   @AfterEach
-  void closeAll() {
+  void closeKernels() {
     baseKernel.close();
     metaKernel.close();
-    baseRuntime.close();
-    metaRuntime.close();
-    baseTransport.close();
-    metaTransport.close();
-  }
-
-  static JmsTransport transport(String prefix) {
-    return Kernel.allowKernelEvents(JmsTransport.builder().broker(broker.inVmUrl()).prefix(prefix))
-        .build();
-  }
-
-  static ActiveRuntime runtime(String name, JmsTransport t) {
-    return ActiveRuntime.builder().name(name).workers(2).jmx(false).transport(t).build();
   }
 
   /** A robot of the base runtime, registered in the name service, as the meta runtime finds it. */

@@ -92,6 +92,8 @@ class ModuleBoundariesTest {
           "org.armgals.gals",
           "org.armgals.maam",
           "org.armgals.maam.sim",
+          "org.armgals.testkit",
+          "org.armgals.testkit.maam",
           "org.armgals.examples",
           "org.armgals.bench");
 
@@ -217,7 +219,9 @@ class ModuleBoundariesTest {
     "arm-kernel, org.armgals.kernel",
     "arm-gals, org.armgals.gals",
     "maam-framework, org.armgals.maam",
-    "maam-sim, org.armgals.maam.sim"
+    "maam-sim, org.armgals.maam.sim",
+    "armgals-testkit, org.armgals.testkit",
+    "armgals-testkit-maam, org.armgals.testkit.maam"
   })
   void eachModuleExportsOnlyItsListedApi(String module, String root) throws IOException {
     Set<String> api = apiList(module);
@@ -241,7 +245,9 @@ class ModuleBoundariesTest {
         "org.armgals.kernel",
         "org.armgals.gals",
         "org.armgals.maam",
-        "org.armgals.maam.sim"
+        "org.armgals.maam.sim",
+        "org.armgals.testkit",
+        "org.armgals.testkit.maam"
       })
   void noModulesPackagesFormACycle(String root) {
     List<String> nested = MODULE_ROOTS.stream().filter(r -> r.startsWith(root + ".")).toList();

@@ -16,8 +16,8 @@ import org.armgals.maam.Perceptor;
 import org.armgals.maam.Port;
 import org.armgals.maam.RobotKind;
 import org.armgals.maam.Schema;
+import org.armgals.maam.TestBody;
 import org.armgals.maam.spi.Body;
-import org.armgals.maam.spi.FakeBody;
 import org.armgals.representation.p.PState;
 import org.junit.jupiter.api.Test;
 
@@ -52,8 +52,7 @@ class RobotNotificationLossTest {
             StructuralMeta.bootstrap(runtime, KernelOptions.defaults().withJmx(false));
         Island island = Island.builder("robots", runtime).jmx(false).build()) {
       long[] now = {0};
-      AbstractRobot robot =
-          new AbstractRobot("lossy", FakeBody.builder("body").build(), () -> now[0]) {};
+      AbstractRobot robot = new AbstractRobot("lossy", TestBody.empty("body"), () -> now[0]) {};
       robot.addSchema(Schema.builder("idle").add(new Idle()).build());
       BMetaRobot meta =
           new BMetaRobot("bmrobot", Damping.none()) {

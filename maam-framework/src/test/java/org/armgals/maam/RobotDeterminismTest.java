@@ -4,7 +4,6 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.armgals.maam.spi.FakeBody;
 import org.junit.jupiter.api.Test;
 
 /** The same program, the same inputs: the same signals each cycle, run after run. */
@@ -23,7 +22,7 @@ class RobotDeterminismTest {
     RandomProgram program = new RandomProgram(seed, 4, 8);
     TestRobot.TestTime time = new TestRobot.TestTime();
     List<String> trace = new ArrayList<>();
-    AbstractRobot robot = new AbstractRobot("r" + seed, FakeBody.builder("b").build(), time) {};
+    AbstractRobot robot = new AbstractRobot("r" + seed, TestBody.empty("b"), time) {};
     robot.setScheduling(program.schemas, program.connectors);
     for (int cycle = 0; cycle < 5; cycle++) {
       robot.cycle();

@@ -3,8 +3,9 @@ package org.armgals.maam;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.Set;
 import org.armgals.maam.spi.ActuatorKey;
-import org.armgals.maam.spi.FakeBody;
 import org.armgals.maam.spi.SensorKey;
 
 /**
@@ -19,11 +20,11 @@ final class TestRobot extends AbstractRobot {
   static final ActuatorKey<Integer> OTHER_MOTOR = ActuatorKey.of("other-motor", Integer.class);
   static final long PERIOD = Duration.ofMillis(10).toNanos();
 
-  final FakeBody fake;
+  final TestBody fake;
   final TestTime time;
   final List<String> errors = new ArrayList<>();
 
-  private TestRobot(FakeBody body, TestTime time) {
+  private TestRobot(TestBody body, TestTime time) {
     super("test-robot", body, time);
     this.fake = body;
     this.time = time;
@@ -31,13 +32,8 @@ final class TestRobot extends AbstractRobot {
   }
 
   static TestRobot create() {
-    FakeBody body =
-        FakeBody.builder("test-body")
-            .sensor(WANDER, 0)
-            .sensor(OBSTACLE, 0)
-            .actuator(MOTOR)
-            .actuator(OTHER_MOTOR)
-            .build();
+    TestBody body =
+        TestBody.of("test-body", Map.of(WANDER, 0, OBSTACLE, 0), Set.of(MOTOR, OTHER_MOTOR));
     return new TestRobot(body, new TestTime());
   }
 

@@ -14,7 +14,7 @@ import org.armgals.maam.Inhibitor;
 import org.armgals.maam.MetaRobot;
 import org.armgals.maam.PortRef;
 import org.armgals.maam.Schema;
-import org.armgals.maam.spi.FakeBody;
+import org.armgals.testkit.maam.FakeBody;
 
 /**
  * {@code gals name=reschedule modules=<n> ms=<x>}: the time of one complete rescheduling of a robot

@@ -4,8 +4,9 @@ import java.util.Set;
 
 /**
  * What a robot senses and drives: a set of named, typed sensors and actuators (the simulator
- * implements it for MAAM atoms; {@link FakeBody} is the test double; a real robot could too). The
- * names and types of an atom's are in {@link Atom}.
+ * implements it for MAAM atoms; {@code org.armgals.testkit.maam.FakeBody} of armgals-testkit-maam
+ * is the test double; a real robot could too). The names and types of an atom's are in {@link
+ * Atom}.
  *
  * <p>Concurrency contract: a robot calls {@link #read}, {@link #command} and {@link #endCycle} only
  * from the thread running its cycle, one cycle at a time. A body changes the values its sensors

@@ -14,11 +14,11 @@ import org.armgals.kernel.NotificationPolicy;
 import org.armgals.kernel.StructuralMeta;
 import org.armgals.maam.RobotKind;
 import org.armgals.maam.spi.Atom;
-import org.armgals.maam.spi.FakeBody;
 import org.armgals.maam.spi.Leg;
 import org.armgals.maam.spi.LegAngles;
 import org.armgals.maam.spi.Tilt;
 import org.armgals.representation.p.PState;
+import org.armgals.testkit.maam.FakeBody;
 import org.junit.jupiter.api.Test;
 
 /**

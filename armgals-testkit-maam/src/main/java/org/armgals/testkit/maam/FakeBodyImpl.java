@@ -1,4 +1,4 @@
-package org.armgals.maam.spi;
+package org.armgals.testkit.maam;
 
 import static java.util.Objects.requireNonNull;
 
@@ -10,6 +10,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import org.armgals.maam.spi.ActuatorKey;
+import org.armgals.maam.spi.SensorKey;
 
 /** {@link FakeBody}: maps from keys to the current value and to the commands received. */
 final class FakeBodyImpl implements FakeBody {

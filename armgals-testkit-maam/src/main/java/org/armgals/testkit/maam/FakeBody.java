@@ -1,7 +1,16 @@
-package org.armgals.maam.spi;
+package org.armgals.testkit.maam;
 
 import java.util.List;
 import java.util.Optional;
+import org.armgals.maam.spi.ActuatorKey;
+import org.armgals.maam.spi.Atom;
+import org.armgals.maam.spi.Body;
+import org.armgals.maam.spi.Inbox;
+import org.armgals.maam.spi.Leg;
+import org.armgals.maam.spi.LegAngles;
+import org.armgals.maam.spi.LegBinding;
+import org.armgals.maam.spi.SensorKey;
+import org.armgals.maam.spi.Tilt;
 
 /**
  * The body test double: tests set what its sensors read and look at the commands its actuators
