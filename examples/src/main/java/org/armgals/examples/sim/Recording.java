@@ -41,6 +41,7 @@ final class Recording {
   private long lastReadingNanos = -1;
   private double[] startCentre = {0, 0};
   private double[] endCentre = {0, 0};
+  private double pathLength;
 
   Recording(AtomParams params) {
     this.params = params;
@@ -76,11 +77,30 @@ final class Recording {
       first = List.copyOf(views);
       startEnergy = total;
       startCentre = new double[] {x / n, y / n};
+      endCentre = startCentre;
     }
     last = List.copyOf(views);
     lastSeconds = at;
     endEnergy = total;
-    endCentre = new double[] {x / n, y / n};
+    double[] centre = {x / n, y / n};
+    pathLength += step(endCentre, centre);
+    endCentre = centre;
+  }
+
+  /** The length of the straight step from {@code a} to {@code b} on the ground plane (m). */
+  static double step(double[] a, double[] b) {
+    return Math.hypot(b[0] - a[0], b[1] - a[1]);
+  }
+
+  /** The length of {@code path}: the sum of its straight steps (m). */
+  static double length(List<Point> path) {
+    double length = 0;
+    for (int i = 1; i < path.size(); i++) {
+      Point a = path.get(i - 1);
+      Point b = path.get(i);
+      length += step(new double[] {a.x(), a.y()}, new double[] {b.x(), b.y()});
+    }
+    return length;
   }
 
   /** Tells that the run ended at {@code nanos} of simulated time. */
@@ -123,10 +143,19 @@ final class Recording {
   }
 
   /**
-   * How far the molecule's centre went on the ground plane (m), from the first to the last sample.
+   * How far the molecule's centre went on the ground plane (m), from the first to the last sample,
+   * in a straight line.
    */
-  double distance() {
+  double displacement() {
     return Math.hypot(endCentre[0] - startCentre[0], endCentre[1] - startCentre[1]);
+  }
+
+  /**
+   * The length of the molecule's centre's path on the ground plane (m): the sum of the straight
+   * steps between one sample and the next, from the first to the last.
+   */
+  double pathLength() {
+    return pathLength;
   }
 
   /** An atom's diameter, tip to tip with its legs straight (m). */
@@ -137,12 +166,13 @@ final class Recording {
   Summary summary(long missedCycles, List<Summary.Entry> figures, Path dir) {
     List<Summary.Entry> entries = new ArrayList<>();
     entries.add(entry("simulated time", "%.2f s", seconds));
-    entries.add(entry("distance", "%.3f m", distance()));
+    entries.add(entry("displacement", "%.3f m", displacement()));
+    entries.add(entry("path length", "%.3f m", pathLength));
     entries.add(
         entry(
             "speed",
             "%.3f atom diameters/s (%.2f m each)",
-            lastSeconds > 0 ? distance() / atomDiameter() / lastSeconds : 0.0,
+            lastSeconds > 0 ? displacement() / atomDiameter() / lastSeconds : 0.0,
             atomDiameter()));
     entries.add(entry("energy used", "%.2f J", startEnergy - endEnergy));
     entries.add(entry("adaptations", "%d", adaptations.size()));
