@@ -264,9 +264,9 @@ public final class MoleculePicture {
     g.setTransform(saved);
   }
 
-  /** A step of 1, 2 or 5 times a power of ten giving a tick every 80 pixels or more. */
+  /** A step of 1, 2 or 5 times a power of ten giving a tick every 60 pixels or more. */
   static double step(double range, double pixels) {
-    double raw = range / Math.max(1, pixels / 80);
+    double raw = range / Math.max(1, pixels / 60);
     double magnitude = Math.pow(10, Math.floor(Math.log10(raw)));
     for (double m : new double[] {1, 2, 5}) {
       if (m * magnitude >= raw * (1 - 1e-9)) {

@@ -16,6 +16,7 @@ import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.Styler;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 
 /** The plots of a run, each written as a PNG file and as SVG beside it. */
@@ -174,6 +175,8 @@ public final class Plots {
     }
     XYChart chart = chart(title, "time (s)", TIMELINE_ROWS);
     chart.getStyler().setYAxisTicksVisible(false).setXAxisMin(0.0).setXAxisMax(endSeconds);
+    // Below the plot: an adaptation's name is long, and beside the plot it would squeeze it.
+    chart.getStyler().setLegendPosition(Styler.LegendPosition.OutsideS);
     Map<String, List<Point>> rows = new LinkedHashMap<>();
     for (Marker m : markers) {
       int row = rows.containsKey(m.kind()) ? indexOf(rows, m.kind()) : rows.size();

@@ -41,7 +41,7 @@ final class Recording {
   private long lastReadingNanos = -1;
   private double[] startCentre = {0, 0};
   private double[] endCentre = {0, 0};
-  private double pathLength;
+  private final List<Point> centres = new ArrayList<>();
 
   Recording(AtomParams params) {
     this.params = params;
@@ -83,24 +83,32 @@ final class Recording {
     lastSeconds = at;
     endEnergy = total;
     double[] centre = {x / n, y / n};
-    pathLength += step(endCentre, centre);
+    centres.add(new Point(centre[0], centre[1]));
     endCentre = centre;
   }
 
-  /** The length of the straight step from {@code a} to {@code b} on the ground plane (m). */
-  static double step(double[] a, double[] b) {
-    return Math.hypot(b[0] - a[0], b[1] - a[1]);
-  }
-
-  /** The length of {@code path}: the sum of its straight steps (m). */
-  static double length(List<Point> path) {
-    double length = 0;
-    for (int i = 1; i < path.size(); i++) {
-      Point a = path.get(i - 1);
-      Point b = path.get(i);
-      length += step(new double[] {a.x(), a.y()}, new double[] {b.x(), b.y()});
+  /**
+   * The length of {@code path} at a resolution of {@code resolution} metres: the sum of the
+   * straight steps from its start to the next point at least {@code resolution} away, from there to
+   * the next, and so on, and on to its end. Wobbles smaller than the resolution (a kernel rocking
+   * over its tips at each step of a gait) are not counted as distance; a turn is, to within its
+   * chords.
+   */
+  static double length(List<Point> path, double resolution) {
+    if (path.isEmpty()) {
+      return 0;
     }
-    return length;
+    double length = 0;
+    Point from = path.get(0);
+    for (Point p : path) {
+      double step = Math.hypot(p.x() - from.x(), p.y() - from.y());
+      if (step >= resolution) {
+        length += step;
+        from = p;
+      }
+    }
+    Point end = path.get(path.size() - 1);
+    return length + Math.hypot(end.x() - from.x(), end.y() - from.y());
   }
 
   /** Tells that the run ended at {@code nanos} of simulated time. */
@@ -151,11 +159,12 @@ final class Recording {
   }
 
   /**
-   * The length of the molecule's centre's path on the ground plane (m): the sum of the straight
-   * steps between one sample and the next, from the first to the last.
+   * The length of the molecule's centre's path on the ground plane (m), at a resolution of a
+   * quarter of an atom's diameter ({@link #length(List, double)}), from the first to the last
+   * sample.
    */
   double pathLength() {
-    return pathLength;
+    return length(centres, atomDiameter() / 4);
   }
 
   /** An atom's diameter, tip to tip with its legs straight (m). */
@@ -167,7 +176,7 @@ final class Recording {
     List<Summary.Entry> entries = new ArrayList<>();
     entries.add(entry("simulated time", "%.2f s", seconds));
     entries.add(entry("displacement", "%.3f m", displacement()));
-    entries.add(entry("path length", "%.3f m", pathLength));
+    entries.add(entry("path length", "%.3f m", pathLength()));
     entries.add(
         entry(
             "speed",

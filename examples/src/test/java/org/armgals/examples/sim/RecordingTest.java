@@ -42,14 +42,24 @@ class RecordingTest {
   }
 
   @Test
-  void aPathsLengthIsTheSumOfItsStepsNotTheStraightLineFromItsStartToItsEnd() {
+  void aPathsLengthFollowsItsTurnsButNotItsWobbles() {
     List<Point> halfCircle = new ArrayList<>();
+    List<Point> wobbling = new ArrayList<>();
     for (int i = 0; i <= 1000; i++) {
       double a = Math.PI * i / 1000;
-      halfCircle.add(new Point(0.1 * Math.cos(a), 0.1 * Math.sin(a)));
+      halfCircle.add(new Point(0.5 * Math.cos(a), 0.5 * Math.sin(a)));
+      // the same half circle, rocking 1 cm to and fro 50 times on the way
+      double rock = 0.01 * Math.sin(a * 100);
+      wobbling.add(new Point((0.5 + rock) * Math.cos(a), (0.5 + rock) * Math.sin(a)));
     }
-    assertThat(Recording.length(halfCircle)).isCloseTo(Math.PI * 0.1, within(1e-5));
-    assertThat(Recording.length(List.of(new Point(1, 1)))).isZero();
+    double arc = Math.PI * 0.5;
+    assertThat(Recording.length(halfCircle, 0.055)).isCloseTo(arc, within(arc * 0.002));
+    assertThat(Recording.length(wobbling, 0.055)).isCloseTo(arc, within(arc * 0.05));
+    assertThat(Recording.length(wobbling, 0)).as("every wobble counted").isGreaterThan(arc * 1.5);
+    assertThat(Recording.length(List.of(new Point(0, 0), new Point(0.01, 0)), 0.055))
+        .as("a path shorter than the resolution: start to end")
+        .isCloseTo(0.01, within(1e-12));
+    assertThat(Recording.length(List.of(), 0.055)).isZero();
   }
 
   @Test
@@ -64,7 +74,8 @@ class RecordingTest {
       recording.end(sim.timeNanos());
     }
     List<Point> path = recording.paths().values().iterator().next();
-    assertThat(recording.pathLength()).isEqualTo(Recording.length(path));
+    assertThat(recording.pathLength())
+        .isEqualTo(Recording.length(path, recording.atomDiameter() / 4));
     assertThat(recording.pathLength()).isGreaterThanOrEqualTo(recording.displacement());
     var entries =
         recording.summary(0, List.of(), java.nio.file.Path.of("out")).entries().stream()
