@@ -28,7 +28,9 @@ import java.util.Locale;
  * started.
  */
 public final class MoleculePicture {
+  /** The widest picture: a long molecule, or one that went far along x, has this width. */
   static final int WIDTH = 960;
+
   static final int LEFT = 80;
   static final int RIGHT = 24;
   static final int TOP = 40;
@@ -47,7 +49,9 @@ public final class MoleculePicture {
   static final Color GROUND = new Color(0xC9B48F);
   static final Color GRID = new Color(0xE4E4E4);
   private static final Font TITLE = new Font(Font.SANS_SERIF, Font.BOLD, 16);
-  private static final Font TEXT = new Font(Font.SANS_SERIF, Font.PLAIN, 12);
+  // 13, not 12: VectorGraphics2D leaves the size of a 12-point font out of the SVG, and a browser
+  // then draws it at its own default size.
+  private static final Font TEXT = new Font(Font.SANS_SERIF, Font.PLAIN, 13);
   private static final Font TICKS = new Font(Font.SANS_SERIF, Font.PLAIN, 11);
 
   static {
@@ -76,7 +80,7 @@ public final class MoleculePicture {
     }
     Layout layout = Layout.of(frame);
     Picture.write(
-        WIDTH,
+        layout.width(),
         layout.height(),
         g -> {
           g.setColor(Color.BLACK);
@@ -93,7 +97,8 @@ public final class MoleculePicture {
    * Where things go on the picture: the world's extent shown, the scale, and each view's rectangle
    * in pixels.
    */
-  record Layout(Extent shown, double scale, Rectangle2D top, Rectangle2D side, int height) {
+  record Layout(
+      Extent shown, double scale, Rectangle2D top, Rectangle2D side, int width, int height) {
 
     static Layout of(Extent frame) {
       double size =
@@ -113,7 +118,10 @@ public final class MoleculePicture {
       Rectangle2D top = new Rectangle2D.Double(LEFT, topY, w, dy * scale);
       double sideY = top.getMaxY() + BELOW + CAPTION;
       Rectangle2D side = new Rectangle2D.Double(LEFT, sideY, w, dz * scale);
-      return new Layout(shown, scale, top, side, (int) Math.ceil(side.getMaxY() + BELOW + BOTTOM));
+      // As wide as the views once their height has set the scale, never below half the most.
+      int width = (int) Math.max(WIDTH / 2, Math.ceil(LEFT + w + RIGHT));
+      return new Layout(
+          shown, scale, top, side, width, (int) Math.ceil(side.getMaxY() + BELOW + BOTTOM));
     }
 
     /** World to pixels in the view of {@code area} whose vertical axis is {@code up} (1 or 2). */

@@ -179,6 +179,7 @@ class PicturesShowTheWorldTest {
     BufferedImage image = png(png);
     MoleculePicture.Layout layout = MoleculePicture.Layout.of(frame);
     assertThat(image.getHeight()).isEqualTo(layout.height());
+    assertThat(image.getWidth()).isEqualTo(layout.width());
     assertThat(count(image, layout.top(), MoleculePicture.SOLID))
         .as("the step from above")
         .isGreaterThan(500);
