@@ -7,10 +7,8 @@ import java.awt.Color;
 import java.awt.Font;
 import java.awt.FontMetrics;
 import java.awt.Graphics2D;
-import java.awt.RenderingHints;
 import java.awt.geom.Line2D;
 import java.awt.geom.Path2D;
-import java.awt.image.BufferedImage;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.EnumSet;
@@ -45,7 +43,7 @@ public final class LoopPicture {
   private static final Color SEPARATOR = new Color(0x999999);
 
   static {
-    Png.headless();
+    Picture.headless();
   }
 
   private LoopPicture() {}
@@ -160,7 +158,7 @@ public final class LoopPicture {
 
   /**
    * Draws {@code steps} and {@code links} over {@code [0, endSeconds]} (further if a step is later)
-   * and writes the picture to {@code png}.
+   * and writes the picture to {@code png} and as SVG beside it.
    *
    * @throws IllegalArgumentException if there is no step, if {@code endSeconds} is not after 0, or
    *     if a link's robot has no step
@@ -177,9 +175,7 @@ public final class LoopPicture {
     if (!(endSeconds > 0) || Double.isInfinite(endSeconds)) {
       throw new IllegalArgumentException("a time line must end after 0 s, not " + endSeconds);
     }
-    if (!png.getFileName().toString().endsWith(".png")) {
-      throw new IllegalArgumentException("a picture is written to a .png file, not " + png);
-    }
+    Picture.checkPng(png, "picture");
     List<Row> rows = rows(steps);
     Map<String, Integer> index = new LinkedHashMap<>();
     for (int i = 0; i < rows.size(); i++) {
@@ -196,22 +192,22 @@ public final class LoopPicture {
     }
     XYChart chart = chart(title, rows, end);
     addMarks(chart, rows, steps, index);
-    BufferedImage image = BitmapEncoder.getBufferedImage(chart);
-    Graphics2D g = image.createGraphics();
-    try {
-      g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-      g.setRenderingHint(
-          RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
-      Frame frame = new Frame(chart, rows.size(), end);
-      separators(g, frame, rows);
-      for (Link l : links) {
-        link(g, frame, l, index);
-      }
-      labels(g, frame, rows, steps, index);
-    } finally {
-      g.dispose();
-    }
-    Png.write(image, png, "picture");
+    int height = chart.getHeight();
+    double last = end;
+    Picture.write(
+        WIDTH,
+        height,
+        g -> {
+          chart.paint(g, WIDTH, height);
+          Frame frame = new Frame(chart, rows.size(), last);
+          separators(g, frame, rows);
+          for (Link l : links) {
+            link(g, frame, l, index);
+          }
+          labels(g, frame, rows, steps, index);
+        },
+        png,
+        "picture");
   }
 
   private static void checkTime(double seconds, String what) {

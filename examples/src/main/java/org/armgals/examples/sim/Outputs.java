@@ -11,15 +11,19 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import org.armgals.examples.plot.Extent;
 import org.armgals.examples.plot.Marker;
 import org.armgals.examples.plot.MoleculePicture;
 import org.armgals.examples.plot.Plots;
 import org.armgals.examples.plot.Point;
+import org.armgals.examples.plot.SceneView;
 
 /**
- * The pictures a run leaves: its plots, the molecule at the start and at the end, and, for a run
- * with a meta level, its reflective loop on a time line ({@value #LOOP}, drawn from the loop's
- * record the run left beside them).
+ * The pictures a run leaves, each as PNG and as SVG beside it: its plots, the molecule at the start
+ * and at the end (in one frame: the extent of the molecule at both and of the atoms' paths, so that
+ * the end is drawn where the molecule went), and, for a run with a meta level, its reflective loop
+ * on a time line ({@value #LOOP}, drawn from the loop's record the run left beside them). The
+ * scene's ground and obstacles are in the trajectory and in both molecule pictures.
  */
 final class Outputs {
   static final String TRAJECTORY = "trajectory.png";
@@ -31,23 +35,32 @@ final class Outputs {
 
   private Outputs() {}
 
+  /** The SVG written beside the PNG {@code png}. */
+  static String svg(String png) {
+    return png.substring(0, png.length() - ".png".length()) + ".svg";
+  }
+
   /**
-   * Draws the pictures of {@code recording} into {@code dir}, which holds the run's trace and, if
-   * the run had a reflective side, the loop's record.
+   * Draws the pictures of {@code recording} in {@code scene} into {@code dir}, which holds the
+   * run's trace and, if the run had a reflective side, the loop's record.
    */
-  static void write(String example, Recording recording, Path dir) {
+  static void write(String example, SceneView scene, Recording recording, Path dir) {
     Map<String, List<Point>> paths = new LinkedHashMap<>();
     recording.paths().forEach((id, path) -> paths.put("atom " + id, path));
-    Plots.trajectory(paths, dir.resolve(TRAJECTORY));
+    Plots.trajectory(paths, scene, dir.resolve(TRAJECTORY));
     Plots.series(example + ": energy left", "energy (J)", recording.energy(), dir.resolve(ENERGY));
     List<Marker> markers =
         recording.adaptations().stream().map(a -> new Marker(a.seconds(), a.what())).toList();
     Plots.timeline(
         example + ": adaptations", markers, recording.seconds(), dir.resolve(ADAPTATIONS));
-    MoleculePicture.write(example + " at the start", recording.first(), dir.resolve(START));
+    Extent frame = frame(recording);
+    MoleculePicture.write(
+        example + " at the start", recording.first(), scene, frame, dir.resolve(START));
     MoleculePicture.write(
         String.format(Locale.ROOT, "%s at %.2f s", example, recording.lastSeconds()),
         recording.last(),
+        scene,
+        frame,
         dir.resolve(END));
     Path loop = dir.resolve(Reflection.LOOP);
     if (Files.exists(loop)) {
@@ -56,6 +69,19 @@ final class Outputs {
         timeline.write(example + ": the reflective loop", recording.seconds(), dir.resolve(LOOP));
       }
     }
+  }
+
+  /**
+   * The frame of a run's molecule pictures: the molecule at the start, at the end, and the paths.
+   */
+  static Extent frame(Recording recording) {
+    Extent frame = Extent.of(recording.first()).union(Extent.of(recording.last()));
+    for (List<Point> path : recording.paths().values()) {
+      for (Point p : path) {
+        frame = frame.including(p.x(), p.y(), frame.minZ());
+      }
+    }
+    return frame;
   }
 
   /** The control period the header of {@code trace} gives. */

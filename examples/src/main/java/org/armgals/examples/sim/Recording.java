@@ -41,6 +41,7 @@ final class Recording {
   private long lastReadingNanos = -1;
   private double[] startCentre = {0, 0};
   private double[] endCentre = {0, 0};
+  private final List<Point> centres = new ArrayList<>();
 
   Recording(AtomParams params) {
     this.params = params;
@@ -76,11 +77,38 @@ final class Recording {
       first = List.copyOf(views);
       startEnergy = total;
       startCentre = new double[] {x / n, y / n};
+      endCentre = startCentre;
     }
     last = List.copyOf(views);
     lastSeconds = at;
     endEnergy = total;
-    endCentre = new double[] {x / n, y / n};
+    double[] centre = {x / n, y / n};
+    centres.add(new Point(centre[0], centre[1]));
+    endCentre = centre;
+  }
+
+  /**
+   * The length of {@code path} at a resolution of {@code resolution} metres: the sum of the
+   * straight steps from its start to the next point at least {@code resolution} away, from there to
+   * the next, and so on, and on to its end. Wobbles smaller than the resolution (a kernel rocking
+   * over its tips at each step of a gait) are not counted as distance; a turn is, to within its
+   * chords.
+   */
+  static double length(List<Point> path, double resolution) {
+    if (path.isEmpty()) {
+      return 0;
+    }
+    double length = 0;
+    Point from = path.get(0);
+    for (Point p : path) {
+      double step = Math.hypot(p.x() - from.x(), p.y() - from.y());
+      if (step >= resolution) {
+        length += step;
+        from = p;
+      }
+    }
+    Point end = path.get(path.size() - 1);
+    return length + Math.hypot(end.x() - from.x(), end.y() - from.y());
   }
 
   /** Tells that the run ended at {@code nanos} of simulated time. */
@@ -123,10 +151,20 @@ final class Recording {
   }
 
   /**
-   * How far the molecule's centre went on the ground plane (m), from the first to the last sample.
+   * How far the molecule's centre went on the ground plane (m), from the first to the last sample,
+   * in a straight line.
    */
-  double distance() {
+  double displacement() {
     return Math.hypot(endCentre[0] - startCentre[0], endCentre[1] - startCentre[1]);
+  }
+
+  /**
+   * The length of the molecule's centre's path on the ground plane (m), at a resolution of a
+   * quarter of an atom's diameter ({@link #length(List, double)}), from the first to the last
+   * sample.
+   */
+  double pathLength() {
+    return length(centres, atomDiameter() / 4);
   }
 
   /** An atom's diameter, tip to tip with its legs straight (m). */
@@ -137,12 +175,13 @@ final class Recording {
   Summary summary(long missedCycles, List<Summary.Entry> figures, Path dir) {
     List<Summary.Entry> entries = new ArrayList<>();
     entries.add(entry("simulated time", "%.2f s", seconds));
-    entries.add(entry("distance", "%.3f m", distance()));
+    entries.add(entry("displacement", "%.3f m", displacement()));
+    entries.add(entry("path length", "%.3f m", pathLength()));
     entries.add(
         entry(
             "speed",
             "%.3f atom diameters/s (%.2f m each)",
-            lastSeconds > 0 ? distance() / atomDiameter() / lastSeconds : 0.0,
+            lastSeconds > 0 ? displacement() / atomDiameter() / lastSeconds : 0.0,
             atomDiameter()));
     entries.add(entry("energy used", "%.2f J", startEnergy - endEnergy));
     entries.add(entry("adaptations", "%d", adaptations.size()));

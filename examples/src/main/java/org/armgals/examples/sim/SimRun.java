@@ -29,8 +29,11 @@ import org.armgals.maam.sim.spi.Pacer;
  *   <li>{@value #TRACE}: the simulator's trace, whose header names the example and its options (so
  *       that {@code armgals replay} can run it again);
  *   <li>{@value Outputs#TRAJECTORY}, {@value Outputs#ENERGY}, {@value Outputs#ADAPTATIONS}: the
- *       atoms' paths seen from above, the energy left over time, the adaptations on a time line;
- *   <li>{@value Outputs#START} and {@value Outputs#END}: the molecule at the start and at the end;
+ *       atoms' paths seen from above over the scene, the energy left over time, the adaptations on
+ *       a time line;
+ *   <li>{@value Outputs#START} and {@value Outputs#END}: the molecule in its scene at the start and
+ *       at the end, in one frame;
+ *   <li>beside each picture, the same as SVG;
  *   <li>{@value #PROGRAMS}: the robots' schemas and schedules as they change, for {@code armgals
  *       view}.
  * </ul>
@@ -40,11 +43,12 @@ import org.armgals.maam.sim.spi.Pacer;
  * Ctrl-C ({@link Interruption}) it stops after the cycle it is in, keeps what it has, the trace
  * ending with a line that marks it incomplete ({@link Replay#incomplete}), and exits 130.
  *
- * <p>The summary: distance covered by the molecule's centre (on the ground plane), its speed in
- * atom diameters per second (an atom's diameter is tip to tip, legs straight), the energy used, the
- * adaptations made and why, and the missed cycles (paced to real time: cycles that ended later than
- * a period after their time, counted from the start of the first cycle, so that the crew's own
- * start (a meta level's JVM, say) is none; plus those the crew reports).
+ * <p>The summary: the displacement of the molecule's centre (on the ground plane, start to end in a
+ * straight line) and the length of the path it went along, its speed in atom diameters per second
+ * (an atom's diameter is tip to tip, legs straight), the energy used, the adaptations made and why,
+ * and the missed cycles (paced to real time: cycles that ended later than a period after their
+ * time, counted from the start of the first cycle, so that the crew's own start (a meta level's
+ * JVM, say) is none; plus those the crew reports).
  */
 final class SimRun {
   static final String TRACE = "trace.jsonl";
@@ -203,7 +207,7 @@ final class SimRun {
             "cannot write the trace " + settings.out().resolve(TRACE), e);
       }
       if (ran > 0) { // interrupted before its first cycle, a run has nothing to draw
-        Outputs.write(example.name(), recording, staging.dir());
+        Outputs.write(example.name(), Views.of(scene), recording, staging.dir());
       }
       staging.keep();
       if (ran < cycles) {

@@ -3,10 +3,14 @@ package org.armgals.examples.sim;
 import java.util.ArrayList;
 import java.util.List;
 import org.armgals.examples.plot.AtomView;
+import org.armgals.examples.plot.SceneView;
 import org.armgals.maam.sim.AtomParams;
 import org.armgals.maam.sim.AtomSensors;
 import org.armgals.maam.sim.LegSensors;
+import org.armgals.maam.sim.Obstacle;
 import org.armgals.maam.sim.Quat;
+import org.armgals.maam.sim.Scene;
+import org.armgals.maam.sim.Vec3;
 import org.armgals.maam.spi.Leg;
 
 /**
@@ -17,6 +21,9 @@ import org.armgals.maam.spi.Leg;
  * against the leg, not the leg's against the kernel), then by the atom's orientation. {@code
  * ViewsTest} holds this to the simulator: a turned leg's tip, seen here, is where its proximity ray
  * starts.
+ *
+ * <p>A scene's obstacles as the pictures draw them: a box as a block between its corners, a pipe as
+ * a tube whose outer radius is its inner radius plus its wall (its 16 staves drawn round).
  */
 final class Views {
   private Views() {}
@@ -44,6 +51,34 @@ final class Views {
         new AtomView.Vec(atom.position().x(), atom.position().y(), atom.position().z()),
         params.kernelRadius(),
         legs);
+  }
+
+  static SceneView of(Scene scene) {
+    List<SceneView.Solid> solids = new ArrayList<>();
+    for (Obstacle obstacle : scene.obstacles()) {
+      solids.add(
+          switch (obstacle) {
+            case Obstacle.Box box -> {
+              Vec3 c = box.center();
+              Vec3 s = box.size();
+              yield new SceneView.Block(
+                  new AtomView.Vec(c.x() - s.x() / 2, c.y() - s.y() / 2, c.z() - s.z() / 2),
+                  new AtomView.Vec(c.x() + s.x() / 2, c.y() + s.y() / 2, c.z() + s.z() / 2));
+            }
+            case Obstacle.Pipe pipe ->
+                new SceneView.Tube(
+                    vec(pipe.center()),
+                    pipe.axis() - 'x',
+                    pipe.innerRadius(),
+                    pipe.innerRadius() + pipe.wall(),
+                    pipe.length());
+          });
+    }
+    return new SceneView(solids);
+  }
+
+  private static AtomView.Vec vec(Vec3 v) {
+    return new AtomView.Vec(v.x(), v.y(), v.z());
   }
 
   private static double[] rest(Leg leg) {

@@ -38,7 +38,7 @@ class PlotsTest {
       path.add(new Point(i * 0.01, Math.sin(i * 0.1) * 0.2));
     }
     Path png = dir.resolve("trajectory.png");
-    Plots.trajectory(Map.of("molecule", path), png);
+    Plots.trajectory(Map.of("molecule", path), SceneView.GROUND, png);
     BufferedImage image = read(png);
     assertThat(image.getWidth()).isEqualTo(800);
     assertThat(colours(image)).isGreaterThan(10);
@@ -84,28 +84,31 @@ class PlotsTest {
             0.03,
             List.of(new AtomView.Leg(new AtomView.Vec(0.08, 0, 0.05), true)));
     Path png = dir.resolve("molecule-start.png");
-    MoleculePicture.write("start", List.of(a, b), png);
+    Extent frame = Extent.of(List.of(a, b));
+    MoleculePicture.write("start", List.of(a, b), SceneView.GROUND, frame, png);
     BufferedImage image = read(png);
-    assertThat(image.getWidth()).isEqualTo(960);
-    // Both panels have the kernel colour somewhere.
+    MoleculePicture.Layout layout = MoleculePicture.Layout.of(frame);
+    assertThat(image.getWidth()).isEqualTo(layout.width()).isBetween(480, 960);
+    // Both views, the top one above the side one, have the kernel colour somewhere.
     int kernel = 0x4C72B0;
-    boolean left = false;
-    boolean right = false;
+    boolean top = false;
+    boolean side = false;
     for (int y = 0; y < image.getHeight(); y++) {
       for (int x = 0; x < image.getWidth(); x++) {
         if ((image.getRGB(x, y) & 0xFFFFFF) == kernel) {
-          left |= x < 480;
-          right |= x >= 480;
+          top |= layout.top().contains(x, y);
+          side |= layout.side().contains(x, y);
         }
       }
     }
-    assertThat(left).as("top view drawn").isTrue();
-    assertThat(right).as("side view drawn").isTrue();
+    assertThat(top).as("top view drawn").isTrue();
+    assertThat(side).as("side view drawn").isTrue();
   }
 
   @Test
   void badInputIsRefusedWithTheValue() {
-    assertThatThrownBy(() -> Plots.trajectory(Map.of("m", List.of()), dir.resolve("t.png")))
+    assertThatThrownBy(
+            () -> Plots.trajectory(Map.of("m", List.of()), SceneView.GROUND, dir.resolve("t.png")))
         .hasMessageContaining("'m'");
     assertThatThrownBy(() -> Plots.series("E", "J", List.of(new Point(0, 1)), dir.resolve("e.svg")))
         .hasMessageContaining("e.svg");
@@ -113,7 +116,12 @@ class PlotsTest {
     assertThatThrownBy(() -> new Marker(-1, "x")).hasMessageContaining("-1");
     assertThatThrownBy(() -> Plots.timeline("A", List.of(), 0, dir.resolve("a.png")))
         .hasMessageContaining("not 0.0");
-    assertThatThrownBy(() -> MoleculePicture.write("x", List.of(), dir.resolve("m.png")))
+    Extent frame = new Extent(0, 1, 0, 1, 0, 1);
+    assertThatThrownBy(
+            () ->
+                MoleculePicture.write(
+                    "x", List.of(), SceneView.GROUND, frame, dir.resolve("m.png")))
         .hasMessageContaining("at least one atom");
+    assertThatThrownBy(() -> new Extent(0, -1, 0, 1, 0, 1)).hasMessageContaining("x 0.0 to -1.0");
   }
 }

@@ -17,7 +17,7 @@ class RowLabelsTest {
   private static final FontMetrics METRICS;
 
   static {
-    Png.headless();
+    Picture.headless();
     Graphics2D g = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB).createGraphics();
     METRICS = g.getFontMetrics(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
     g.dispose();

@@ -105,6 +105,33 @@ class SimRunTest {
   }
 
   @Test
+  void aRunLeavesExactlyTheFilesTheUserGuideListsAndAnSvgBesideEachPng() throws IOException {
+    run(cycles(20), false, new AtomicLong());
+
+    Path root = Path.of("").toAbsolutePath();
+    while (!Files.isRegularFile(root.resolve("docs/user-guide.md"))) {
+      root = root.getParent();
+    }
+    String guide = Files.readString(root.resolve("docs/user-guide.md"), StandardCharsets.UTF_8);
+    String outputs = guide.substring(guide.indexOf("## Read the outputs"));
+    int start = outputs.indexOf("| file |");
+    java.util.Set<String> listed = new java.util.TreeSet<>();
+    for (String row : outputs.substring(start, outputs.indexOf("\n\n", start)).split("\n")) {
+      java.util.regex.Matcher name =
+          java.util.regex.Pattern.compile("`([^`]+)`").matcher(row.split("\\|")[1]);
+      while (name.find()) {
+        listed.add(name.group(1));
+      }
+    }
+    try (Stream<Path> files = Files.list(dir)) {
+      assertThat(files.map(p -> p.getFileName().toString()))
+          .as("the files of a run without a meta level, as docs/user-guide.md lists them")
+          .containsExactlyInAnyOrderElementsOf(listed)
+          .contains(Outputs.svg(Outputs.TRAJECTORY), Outputs.svg(Outputs.END));
+    }
+  }
+
+  @Test
   void theAtomsAttributeIsLeftOutWhenNotGiven() throws IOException {
     run(cycles(3), false, new AtomicLong());
 
@@ -121,7 +148,8 @@ class SimRunTest {
     assertThat(entries.keySet())
         .containsSubsequence(
             "simulated time",
-            "distance",
+            "displacement",
+            "path length",
             "speed",
             "energy used",
             "adaptations",
@@ -129,7 +157,8 @@ class SimRunTest {
             "gait",
             "outputs");
     assertThat(entries.get("simulated time")).isEqualTo("0.20 s");
-    assertThat(entries.get("distance")).matches("\\d+\\.\\d{3} m");
+    assertThat(entries.get("displacement")).matches("\\d+\\.\\d{3} m");
+    assertThat(entries.get("path length")).matches("\\d+\\.\\d{3} m");
     assertThat(entries.get("speed")).matches("\\d+\\.\\d{3} atom diameters/s \\(0\\.22 m each\\)");
     assertThat(entries.get("energy used")).matches("\\d+\\.\\d{2} J");
     assertThat(Double.parseDouble(entries.get("energy used").replace(" J", ""))).isPositive();
