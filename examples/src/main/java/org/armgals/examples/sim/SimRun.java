@@ -46,9 +46,10 @@ import org.armgals.maam.sim.spi.Pacer;
  * <p>The summary: the displacement of the molecule's centre (on the ground plane, start to end in a
  * straight line) and the length of the path it went along, its speed in atom diameters per second
  * (an atom's diameter is tip to tip, legs straight), the energy used, the adaptations made and why,
- * and the missed cycles (paced to real time: cycles that ended later than a period after their
- * time, counted from the start of the first cycle, so that the crew's own start (a meta level's
- * JVM, say) is none; plus those the crew reports).
+ * and the missed cycles (paced to real time: cycles that ended later than a period after their time
+ * on a schedule that starts with the first cycle, as the pacer's does, so that neither the crew's
+ * own start (a meta level's JVM, say) nor a first cycle slowed by the JVM's warming up makes every
+ * later cycle missed; plus those the crew reports).
  */
 final class SimRun {
   static final String TRACE = "trace.jsonl";
@@ -342,15 +343,21 @@ final class SimRun {
     long period = settings.period().toNanos();
     long missed = 0;
     long i = 0;
-    long first = progress.elapsedNanos(); // the robots' time starts here, not at the crew's start
+    // The schedule starts with the first cycle, as the pacer's does: not at the crew's start (a
+    // meta level's JVM starting, say), nor before a first cycle slowed by the JVM's warming up.
+    long origin = 0;
     while (i < cycles && !interruption.requested()) {
       sim.runCycle();
       i++;
       recording.sample(sim);
       watching.after(i - 1);
-      if (settings.realTime()
-          && (progress.elapsedNanos() - first) * speed > sim.timeNanos() + period) {
-        missed++;
+      if (settings.realTime()) {
+        long elapsed = progress.elapsedNanos();
+        if (i == 1) {
+          origin = elapsed - (long) (sim.timeNanos() / speed);
+        } else if ((elapsed - origin) * speed > sim.timeNanos() + period) {
+          missed++;
+        }
       }
       progress.update(i, sim.timeNanos());
     }

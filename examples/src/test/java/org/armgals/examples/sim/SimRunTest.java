@@ -227,6 +227,68 @@ class SimRunTest {
   }
 
   @Test
+  void pacedToRealTimeAFirstCycleSlowedByWarmingUpMissesNothingLaterWhileALateCycleStillCounts() {
+    AtomicLong now = new AtomicLong();
+    long period = PERIOD.toNanos();
+    SimExample warmingUp =
+        new SimExample() {
+          @Override
+          public String name() {
+            return example.name();
+          }
+
+          @Override
+          public String summary() {
+            return example.summary();
+          }
+
+          @Override
+          public Scene scene(RunSettings settings) {
+            return example.scene(settings);
+          }
+
+          @Override
+          public Duration defaultDuration() {
+            return example.defaultDuration();
+          }
+
+          @Override
+          public Crew start(Simulation sim, RunSettings settings, Journal journal) {
+            int first = sim.atomIds().get(0);
+            sim.setController(
+                first,
+                (body, cycle) -> {
+                  now.addAndGet(period); // each cycle takes its period of real time...
+                  if (cycle == 0) {
+                    now.addAndGet(Duration.ofSeconds(1).toNanos()); // ...the first, warming up
+                  }
+                  if (cycle == 3) {
+                    now.addAndGet(3 * period); // ...and cycle 3 ends late: it and those after
+                  }
+                });
+            return new Crew() {};
+          }
+        };
+    RunSettings settings =
+        new RunSettings(
+            OptionalLong.of(6),
+            Optional.empty(),
+            PERIOD,
+            7,
+            Optional.empty(),
+            true,
+            Optional.empty(),
+            dir);
+    ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+    Summary summary;
+    try (PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8)) {
+      summary = SimRun.run(warmingUp, settings, out, false, now::get);
+    }
+
+    assertThat(summary.entries()).contains(new Summary.Entry("missed cycles", "3"));
+  }
+
+  @Test
   void cyclesComeFromTheCyclesTheSecondsOrTheDefaultDurationRoundedUp() {
     assertThat(SimRun.cycles(example, cycles(7))).isEqualTo(7);
     assertThat(
