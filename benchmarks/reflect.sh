@@ -27,8 +27,8 @@
 # Builds benchmarks/target/benchmarks.jar with the Maven wrapper, then runs the entry point
 # org.armgals.bench.reflect.Reflect on a JDK >= 21 (scripts/java.sh) with REFLECT_JAVA_OPTS
 # (default: none, as ./armgals runs), the runs' outputs (trace, pictures, loop.jsonl) under
-# benchmarks/target/reflect/. `uptime` goes to stderr before each figure. See docs/benchmarks.md,
-# "The reflective loop". Measure on a quiet machine.
+# benchmarks/target/reflect/. `uptime` goes to stderr before each figure. See
+# docs/benchmarks-reflection.md. Measure on a quiet machine.
 set -euo pipefail
 
 here="$(cd "$(dirname "$0")" && pwd)"
