@@ -37,7 +37,14 @@ class PacerTest {
   void aPacerAtTwiceRealTimeWaitsHalfAsLong() {
     long[] now = {0};
     List<Long> sleeps = new ArrayList<>();
-    Pacer pacer = Pacer.realTime(() -> now[0], sleeps::add, 2.0);
+    Pacer pacer =
+        Pacer.realTime(
+            () -> now[0],
+            nanos -> {
+              sleeps.add(nanos);
+              now[0] += nanos;
+            },
+            2.0);
     pacer.pace(0);
     pacer.pace(10_000_000);
     assertThat(sleeps).containsExactly(5_000_000L);
