@@ -34,7 +34,9 @@ public interface IdleStrategy {
     }
   }
 
-  /** One step of waiting, each longer than or as long as the one before, until a reset. */
+  /**
+   * One step of waiting; how long it lasts is the strategy's (a backoff waits longer each step).
+   */
   void idle();
 
   /** Work was found: the next {@link #idle()} starts again with the shortest wait. */
