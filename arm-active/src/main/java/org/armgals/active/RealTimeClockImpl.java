@@ -2,23 +2,27 @@ package org.armgals.active;
 
 import java.time.Duration;
 import java.util.concurrent.locks.LockSupport;
+import java.util.function.BooleanSupplier;
+import org.armgals.active.spi.DeadlinePacer;
 import org.jspecify.annotations.Nullable;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
  * The real-time clock: release {@code k} is due at {@code origin + k × period}. The clock thread
- * parks until {@link #SPIN_NANOS} before that, then spins. An instant still running when the next
- * release is due is an overrun; the missed releases are skipped (not caught up).
+ * waits for it with a {@link DeadlinePacer} (parks until 100 µs before, then spins). An instant
+ * still running when the next release is due is an overrun; the missed releases are skipped (not
+ * caught up).
  */
 final class RealTimeClockImpl implements RealTimeClock, ClockSupport.Owner {
   private static final Logger LOG = LoggerFactory.getLogger(RealTimeClockImpl.class);
-  static final long SPIN_NANOS = 100_000;
 
   private final ClockSupport support;
   private final Duration period;
   private final long periodNanos;
   private final TimeSource time;
+  private final DeadlinePacer pacer;
+  private final BooleanSupplier isClosed = () -> this.closed;
   private volatile long instant;
   private volatile long origin;
   private volatile boolean closed;
@@ -29,6 +33,7 @@ final class RealTimeClockImpl implements RealTimeClock, ClockSupport.Owner {
     this.support = new ClockSupport(period);
     this.period = period;
     this.time = time;
+    this.pacer = DeadlinePacer.of(time);
   }
 
   @Override
@@ -55,7 +60,7 @@ final class RealTimeClockImpl implements RealTimeClock, ClockSupport.Owner {
     long k = 1;
     while (!closed) {
       long due = origin + k * periodNanos;
-      waitUntil(due);
+      pacer.awaitUntil(due, isClosed);
       if (closed) {
         return;
       }
@@ -73,20 +78,6 @@ final class RealTimeClockImpl implements RealTimeClock, ClockSupport.Owner {
       k++;
       if (overrun) {
         k = (end - origin) / periodNanos + 1;
-      }
-    }
-  }
-
-  private void waitUntil(long due) {
-    for (; ; ) {
-      long remaining = due - time.nanoTime();
-      if (remaining <= 0 || closed) {
-        return;
-      }
-      if (remaining > SPIN_NANOS) {
-        LockSupport.parkNanos(this, remaining - SPIN_NANOS);
-      } else {
-        Thread.onSpinWait();
       }
     }
   }

@@ -6,6 +6,7 @@ import java.time.Duration;
 import java.util.List;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.TimeSource;
+import org.armgals.active.spi.DeadlinePacer;
 import org.armgals.kernel.AdaptationPoint;
 import org.armgals.kernel.BehavioralMeta;
 import org.armgals.kernel.Entity;
@@ -252,7 +253,7 @@ public interface Island extends AutoCloseable {
       if (capacity < 1) {
         throw new IllegalArgumentException("capacity must be >= 1, was " + capacity);
       }
-      return new IslandImpl(this, Pacing.REAL);
+      return new IslandImpl(this, DeadlinePacer.of(timeSource));
     }
   }
 }

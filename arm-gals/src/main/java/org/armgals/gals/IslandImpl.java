@@ -8,6 +8,7 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.BooleanSupplier;
 import javax.management.ObjectName;
 import org.armgals.active.ActiveContext;
 import org.armgals.active.ActiveObject;
@@ -17,6 +18,7 @@ import org.armgals.active.ManualClock;
 import org.armgals.active.ObjectConfig;
 import org.armgals.active.TimeSource;
 import org.armgals.active.spi.CycleRecorder;
+import org.armgals.active.spi.DeadlinePacer;
 import org.armgals.kernel.AdaptationPoint;
 import org.armgals.kernel.BehavioralMeta;
 import org.armgals.kernel.Entity;
@@ -42,7 +44,8 @@ final class IslandImpl implements Island {
   private final AdaptationPoint adaptationPoint;
   private final OverrunPolicy overrunPolicy;
   private final TimeSource time;
-  private final Pacing pacing;
+  private final DeadlinePacer pacer;
+  private final BooleanSupplier isClosed = () -> this.closed;
   private final ObjectConfig config;
   private final ManualClock clock;
   private final CycleRecorder stats;
@@ -54,7 +57,7 @@ final class IslandImpl implements Island {
   private volatile boolean closed;
   private @Nullable Thread runner;
 
-  IslandImpl(Island.Builder b, Pacing pacing) {
+  IslandImpl(Island.Builder b, DeadlinePacer pacer) {
     this.name = b.name;
     this.runtime = b.runtime;
     this.period = b.period;
@@ -62,7 +65,7 @@ final class IslandImpl implements Island {
     this.adaptationPoint = b.adaptationPoint;
     this.overrunPolicy = b.overrunPolicy;
     this.time = b.timeSource;
-    this.pacing = pacing;
+    this.pacer = pacer;
     this.clock = Clock.manual(b.period);
     this.config = ObjectConfig.synchronous(clock).withCapacity(b.capacity);
     this.stats = new CycleRecorder(period);
@@ -308,7 +311,7 @@ final class IslandImpl implements Island {
    * its cycle, and answers when the next one is due.
    */
   long runOnce(Schedule schedule, long due) {
-    pacing.waitUntil(time, due, () -> closed);
+    pacer.awaitUntil(due, isClosed);
     if (closed) {
       return due;
     }

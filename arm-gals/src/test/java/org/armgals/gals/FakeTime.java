@@ -3,6 +3,7 @@ package org.armgals.gals;
 import java.time.Duration;
 import java.util.concurrent.atomic.AtomicLong;
 import org.armgals.active.TimeSource;
+import org.armgals.active.spi.DeadlinePacer;
 
 /** A time source moved by the test (and by reactions that pretend to work for a while). */
 final class FakeTime implements TimeSource {
@@ -17,8 +18,8 @@ final class FakeTime implements TimeSource {
     now.addAndGet(d.toNanos());
   }
 
-  /** The pacing of a real-time runner on this time: waiting is moving time forward. */
-  Pacing pacing() {
-    return (time, due, stop) -> now.accumulateAndGet(due, Math::max);
+  /** The pacer of a real-time runner on this time: parking is moving time forward. */
+  DeadlinePacer pacing() {
+    return DeadlinePacer.of(this, Duration.ZERO, now::addAndGet);
   }
 }

@@ -60,8 +60,11 @@ import org.armgals.active.jms.JmsTransport;
 import org.armgals.active.jms.Presence;
 import org.armgals.active.jms.Subscription;
 import org.armgals.active.spi.AllowList;
+import org.armgals.active.spi.BackoffIdleStrategy;
 import org.armgals.active.spi.CycleRecorder;
+import org.armgals.active.spi.DeadlinePacer;
 import org.armgals.active.spi.ErrorHandler;
+import org.armgals.active.spi.IdleStrategy;
 import org.armgals.active.spi.NameService;
 import org.armgals.active.spi.ObjectListener;
 import org.armgals.active.spi.PresenceEvent;
@@ -151,9 +154,13 @@ class ModuleBoundariesTest {
           TransportStats.class,
           WaitCycleException.class,
           AllowList.class,
+          BackoffIdleStrategy.class,
+          BackoffIdleStrategy.Phase.class,
           CycleRecorder.class,
           CycleRecorder.Figures.class,
+          DeadlinePacer.class,
           ErrorHandler.class,
+          IdleStrategy.class,
           NameService.class,
           ObjectListener.class,
           PresenceEvent.class,

@@ -3,6 +3,7 @@ package org.armgals.active.jms;
 import jakarta.jms.JMSException;
 import jakarta.jms.Message;
 import jakarta.jms.MessageConsumer;
+import java.time.Duration;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.LongAdder;
 import java.util.concurrent.locks.LockSupport;
@@ -12,6 +13,7 @@ import java.util.function.Consumer;
 import java.util.function.IntSupplier;
 import org.apache.activemq.artemis.api.core.ActiveMQInterruptedException;
 import org.armgals.active.TimeSource;
+import org.armgals.active.spi.IdleStrategy;
 import org.armgals.active.spi.RemoteAnswer;
 import org.jspecify.annotations.Nullable;
 import org.slf4j.Logger;
@@ -43,7 +45,7 @@ final class AnswerReceiver implements RemoteAnswer.Receiver, AutoCloseable {
   static final long SLICE_MILLIS = 10;
 
   /** How long the receiving thread waits after a failed {@code receive} before it tries again. */
-  private static final long BACKOFF_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
+  private static final Duration BACKOFF = Duration.ofMillis(100);
 
   /** Whether a virtual thread may wait inside the client's {@code receive} without pinning. */
   static final boolean VIRTUAL_THREADS_MAY_LEAD = Runtime.version().feature() >= 24;
@@ -60,6 +62,7 @@ final class AnswerReceiver implements RemoteAnswer.Receiver, AutoCloseable {
   private final LongAdder byOwnThread = new LongAdder();
   private final LongAdder failures = new LongAdder();
   private final LogLimiter failureLog = new LogLimiter();
+  private final IdleStrategy afterFailure = IdleStrategy.backoff(0, 0, BACKOFF, BACKOFF);
   private volatile @Nullable Thread leader;
   private volatile boolean closed;
   private volatile boolean drain;
@@ -199,7 +202,9 @@ final class AnswerReceiver implements RemoteAnswer.Receiver, AutoCloseable {
           lead.unlock();
         }
         if (failed && !closed) {
-          LockSupport.parkNanos(this, BACKOFF_NANOS);
+          afterFailure.idle();
+        } else {
+          afterFailure.reset();
         }
         continue;
       }

@@ -26,6 +26,7 @@ import org.apache.activemq.artemis.api.core.Message;
 import org.armgals.active.BufferFullException;
 import org.armgals.active.OverflowPolicy;
 import org.armgals.active.jms.JmsTransport.Topic;
+import org.armgals.active.spi.IdleStrategy;
 import org.jspecify.annotations.Nullable;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -65,7 +66,7 @@ final class JmsSender implements Runnable {
   private static final long BLOCK_SLICE_NANOS = TimeUnit.MILLISECONDS.toNanos(1);
 
   /** How long the at-least-once sender waits before it sends a refused message again. */
-  private static final long RETRY_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
+  private static final Duration RETRY = Duration.ofMillis(100);
 
   /** The settings and counters a sender shares with its transport. */
   record Context(
@@ -92,6 +93,7 @@ final class JmsSender implements Runnable {
   private final AtomicLong queued = new AtomicLong();
   private final LogLimiter failures = new LogLimiter();
   private final LogLimiter drops = new LogLimiter();
+  private final IdleStrategy retry = IdleStrategy.backoff(0, 0, RETRY, RETRY); // sender thread's
   private volatile boolean stopping;
   private volatile @Nullable Thread thread;
 
@@ -370,6 +372,7 @@ final class JmsSender implements Runnable {
       last[0] += group.size();
     }
     context.sent().add(counted);
+    retry.reset();
     while (true) {
       try {
         producer.send(
@@ -407,7 +410,7 @@ final class JmsSender implements Runnable {
               n,
               e.toString());
         }
-        LockSupport.parkNanos(this, RETRY_NANOS);
+        retry.idle();
       }
     }
   }

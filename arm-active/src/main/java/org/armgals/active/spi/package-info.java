@@ -7,7 +7,11 @@
  * org.armgals.active.spi.RemoteAnswer} futures it completes, its {@link
  * org.armgals.active.spi.NameService}, the {@link org.armgals.active.spi.AllowList} of the types it
  * carries, and the {@link org.armgals.active.spi.PresenceListener}s that hear runtimes join, leave
- * and fall silent.
+ * and fall silent. Two ways of waiting, shared by the runtime and the modules above it: the {@link
+ * org.armgals.active.spi.DeadlinePacer} that waits for a point in time (the real-time clocks, the
+ * islands' runners, the simulator's pacer), and the {@link org.armgals.active.spi.IdleStrategy} of
+ * a loop that waits for work ({@link org.armgals.active.spi.BackoffIdleStrategy}: spin, yield, then
+ * park).
  */
 @NullMarked
 package org.armgals.active.spi;

@@ -7,6 +7,7 @@ import java.util.concurrent.locks.LockSupport;
 import org.HdrHistogram.Histogram;
 import org.armgals.active.ActiveRuntime;
 import org.armgals.active.TimeSource;
+import org.armgals.active.spi.DeadlinePacer;
 import org.armgals.gals.Island;
 import org.armgals.gals.IslandStats;
 
@@ -63,11 +64,8 @@ final class JitterBenchmark {
         island.spawn("e" + i, new long[] {i + 1}, c -> c.state()[0] = Work.cycle(c.state()[0]));
       }
       island.start();
-      TimeSource time = TimeSource.system();
-      long end = time.nanoTime() + length.toNanos();
-      for (long left = length.toNanos(); left > 0; left = end - time.nanoTime()) {
-        LockSupport.parkNanos(left); // the benchmark's length, not a synchronization
-      }
+      DeadlinePacer pacer = DeadlinePacer.of(TimeSource.system(), Duration.ZERO);
+      pacer.awaitUntil(pacer.time().nanoTime() + length.toNanos()); // the benchmark's length
     } finally {
       island.close();
     }

@@ -323,9 +323,7 @@ final class SimRun {
       builder.traceAttribute(PACING, FREE);
     }
     if (settings.realTime()) {
-      builder.pacer(
-          Pacer.realTime(
-              TimeSource.system(), java.util.concurrent.locks.LockSupport::parkNanos, speed));
+      builder.pacer(Pacer.realTime(speed));
     }
     return builder.build();
   }

@@ -34,10 +34,35 @@ class PacerTest {
   }
 
   @Test
+  void aSleeperThatWakesEarlyIsCalledAgainUntilRealTimeHasCaughtUp() {
+    long[] now = {0};
+    List<Long> sleeps = new ArrayList<>();
+    Pacer pacer =
+        Pacer.realTime(
+            () -> now[0],
+            nanos -> {
+              sleeps.add(nanos);
+              now[0] += nanos / 2 + 1; // every sleep ends half way
+            },
+            1.0);
+    pacer.pace(0);
+    pacer.pace(1_000);
+    assertThat(now[0]).isGreaterThanOrEqualTo(1_000);
+    assertThat(sleeps).startsWith(1_000L, 499L);
+  }
+
+  @Test
   void aPacerAtTwiceRealTimeWaitsHalfAsLong() {
     long[] now = {0};
     List<Long> sleeps = new ArrayList<>();
-    Pacer pacer = Pacer.realTime(() -> now[0], sleeps::add, 2.0);
+    Pacer pacer =
+        Pacer.realTime(
+            () -> now[0],
+            nanos -> {
+              sleeps.add(nanos);
+              now[0] += nanos;
+            },
+            2.0);
     pacer.pace(0);
     pacer.pace(10_000_000);
     assertThat(sleeps).containsExactly(5_000_000L);
