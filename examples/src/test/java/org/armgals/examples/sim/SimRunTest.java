@@ -174,40 +174,46 @@ class SimRunTest {
     assertThat(entries.get("outputs")).isEqualTo(dir.toString());
   }
 
-  @Test
-  void pacedToRealTimeTheCyclesAreMissedFromTheFirstCycleOnNotFromTheCrewsStart() {
-    AtomicLong now = new AtomicLong();
-    SimExample slowToStart =
-        new SimExample() {
-          @Override
-          public String name() {
-            return example.name();
-          }
+  /** How a test's example starts its crew. */
+  private interface Start {
+    Crew start(Simulation sim, RunSettings settings, Journal journal);
+  }
 
-          @Override
-          public String summary() {
-            return example.summary();
-          }
+  /** The scripted example, its crew started by {@code start}. */
+  private SimExample startedBy(Start start) {
+    return new SimExample() {
+      @Override
+      public String name() {
+        return example.name();
+      }
 
-          @Override
-          public Scene scene(RunSettings settings) {
-            return example.scene(settings);
-          }
+      @Override
+      public String summary() {
+        return example.summary();
+      }
 
-          @Override
-          public Duration defaultDuration() {
-            return example.defaultDuration();
-          }
+      @Override
+      public Scene scene(RunSettings settings) {
+        return example.scene(settings);
+      }
 
-          @Override
-          public Crew start(Simulation sim, RunSettings settings, Journal journal) {
-            now.addAndGet(Duration.ofSeconds(2).toNanos()); // a meta level's JVM starting, say
-            return example.start(sim, settings, journal);
-          }
-        };
+      @Override
+      public Duration defaultDuration() {
+        return example.defaultDuration();
+      }
+
+      @Override
+      public Crew start(Simulation sim, RunSettings settings, Journal journal) {
+        return start.start(sim, settings, journal);
+      }
+    };
+  }
+
+  /** {@code example} run for {@code cycles}, paced to real time, the run's time read from now. */
+  private Summary pacedToRealTime(SimExample example, long cycles, AtomicLong now) {
     RunSettings settings =
         new RunSettings(
-            OptionalLong.of(5),
+            OptionalLong.of(cycles),
             Optional.empty(),
             PERIOD,
             7,
@@ -215,11 +221,23 @@ class SimRunTest {
             true,
             Optional.empty(),
             dir);
-    ByteArrayOutputStream bytes = new ByteArrayOutputStream();
-    Summary summary;
-    try (PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8)) {
-      summary = SimRun.run(slowToStart, settings, out, false, now::get);
+    try (PrintStream out =
+        new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8)) {
+      return SimRun.run(example, settings, out, false, now::get);
     }
+  }
+
+  @Test
+  void pacedToRealTimeTheCyclesAreMissedFromTheFirstCycleOnNotFromTheCrewsStart() {
+    AtomicLong now = new AtomicLong();
+    SimExample slowToStart =
+        startedBy(
+            (sim, settings, journal) -> {
+              now.addAndGet(Duration.ofSeconds(2).toNanos()); // a meta level's JVM starting, say
+              return example.start(sim, settings, journal);
+            });
+
+    Summary summary = pacedToRealTime(slowToStart, 5, now);
 
     // No real time passes on the run's clock once the crew has started: only the crew's own.
     assertThat(summary.entries())
@@ -231,59 +249,23 @@ class SimRunTest {
     AtomicLong now = new AtomicLong();
     long period = PERIOD.toNanos();
     SimExample warmingUp =
-        new SimExample() {
-          @Override
-          public String name() {
-            return example.name();
-          }
+        startedBy(
+            (sim, settings, journal) -> {
+              sim.setController(
+                  sim.atomIds().get(0),
+                  (body, cycle) -> {
+                    now.addAndGet(period); // each cycle takes its period of real time...
+                    if (cycle == 0) {
+                      now.addAndGet(Duration.ofSeconds(1).toNanos()); // ...the first, warming up
+                    }
+                    if (cycle == 3) {
+                      now.addAndGet(3 * period); // ...and cycle 3 ends late: it and those after
+                    }
+                  });
+              return new Crew() {};
+            });
 
-          @Override
-          public String summary() {
-            return example.summary();
-          }
-
-          @Override
-          public Scene scene(RunSettings settings) {
-            return example.scene(settings);
-          }
-
-          @Override
-          public Duration defaultDuration() {
-            return example.defaultDuration();
-          }
-
-          @Override
-          public Crew start(Simulation sim, RunSettings settings, Journal journal) {
-            int first = sim.atomIds().get(0);
-            sim.setController(
-                first,
-                (body, cycle) -> {
-                  now.addAndGet(period); // each cycle takes its period of real time...
-                  if (cycle == 0) {
-                    now.addAndGet(Duration.ofSeconds(1).toNanos()); // ...the first, warming up
-                  }
-                  if (cycle == 3) {
-                    now.addAndGet(3 * period); // ...and cycle 3 ends late: it and those after
-                  }
-                });
-            return new Crew() {};
-          }
-        };
-    RunSettings settings =
-        new RunSettings(
-            OptionalLong.of(6),
-            Optional.empty(),
-            PERIOD,
-            7,
-            Optional.empty(),
-            true,
-            Optional.empty(),
-            dir);
-    ByteArrayOutputStream bytes = new ByteArrayOutputStream();
-    Summary summary;
-    try (PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8)) {
-      summary = SimRun.run(warmingUp, settings, out, false, now::get);
-    }
+    Summary summary = pacedToRealTime(warmingUp, 6, now);
 
     assertThat(summary.entries()).contains(new Summary.Entry("missed cycles", "3"));
   }
