@@ -3,6 +3,7 @@ package org.armgals.examples.live;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.io.ByteArrayOutputStream;
+import java.io.OutputStream;
 import java.io.PrintStream;
 import java.net.URI;
 import java.nio.charset.StandardCharsets;
@@ -10,6 +11,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.armgals.active.TimeSource;
@@ -29,8 +33,8 @@ class LiveViewTest {
 
   @Test
   void aLiveRunShowsItsCycleCounterAdvancingAndItsMoleculeDrawn() throws Exception {
-    ByteArrayOutputStream bytes = new ByteArrayOutputStream();
-    PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
+    Output output = new Output();
+    PrintStream out = new PrintStream(output, true, StandardCharsets.UTF_8);
     CompletableFuture<Integer> run =
         CompletableFuture.supplyAsync(
             () ->
@@ -45,7 +49,7 @@ class LiveViewTest {
                     "8",
                     "--out",
                     dir.resolve("energy").toString()));
-    URI page = awaitAddress(bytes, run);
+    URI page = awaitAddress(output, run);
     assertThat(page.getHost()).isEqualTo("127.0.0.1");
     try (Browser browser = Browser.start()) {
       browser.open(page);
@@ -67,7 +71,7 @@ class LiveViewTest {
         Files.write(Path.of(shot), browser.screenshot());
       }
     }
-    assertThat(run.get()).as(bytes.toString(StandardCharsets.UTF_8)).isZero();
+    assertThat(run.get()).as(output.text()).isZero();
     assertThat(dir.resolve("energy").resolve("programs.jsonl")).isNotEmptyFile();
   }
 
@@ -132,20 +136,43 @@ class LiveViewTest {
     }
   }
 
-  private static URI awaitAddress(ByteArrayOutputStream bytes, CompletableFuture<Integer> run)
-      throws InterruptedException {
-    long deadline = System.nanoTime() + Duration.ofSeconds(120).toNanos();
-    while (System.nanoTime() < deadline) {
-      Matcher m = ADDRESS.matcher(bytes.toString(StandardCharsets.UTF_8));
-      if (m.find()) {
-        return URI.create(m.group(1));
+  /** What the run prints, kept, with the live view's address as soon as the run prints it. */
+  private static final class Output extends OutputStream {
+    private final ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+    final CompletableFuture<URI> address = new CompletableFuture<>();
+
+    @Override
+    public synchronized void write(int b) {
+      bytes.write(b);
+      if (b == '\n' && !address.isDone()) {
+        Matcher m = ADDRESS.matcher(text());
+        if (m.find()) {
+          address.complete(URI.create(m.group(1)));
+        }
       }
-      if (run.isDone()) {
-        throw new AssertionError("the run ended without a live view: " + bytes);
-      }
-      Thread.sleep(20); // the run prints the address from another thread
     }
-    throw new AssertionError("the run printed no address in 120 s: " + bytes);
+
+    synchronized String text() {
+      return bytes.toString(StandardCharsets.UTF_8);
+    }
+  }
+
+  /** The live view's address, once the run prints it; fails if the run ends first. */
+  private static URI awaitAddress(Output output, CompletableFuture<Integer> run)
+      throws InterruptedException {
+    CompletableFuture<URI> ended =
+        run.thenApply(
+            status -> {
+              throw new AssertionError(
+                  "the run ended (" + status + ") without a live view: " + output.text());
+            });
+    try {
+      return output.address.applyToEither(ended, address -> address).get(120, TimeUnit.SECONDS);
+    } catch (ExecutionException e) {
+      throw new AssertionError(e.getCause().getMessage(), e.getCause());
+    } catch (TimeoutException e) {
+      throw new AssertionError("the run printed no address in 120 s: " + output.text(), e);
+    }
   }
 
   /** Waits until the page's cycle counter shows a number above {@code above}, and answers it. */
