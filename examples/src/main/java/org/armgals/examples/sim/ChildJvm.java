@@ -40,7 +40,22 @@ public final class ChildJvm implements AutoCloseable {
    */
   public static ChildJvm start(
       String what, Class<?> main, List<String> args, Map<String, String> environment, Path log) {
+    return start(what, main, args, environment, log, "192m");
+  }
+
+  /**
+   * As {@link #start(String, Class, List, Map, Path)}, with a heap of at most {@code maxHeap} (as
+   * {@code -Xmx} takes it: {@code "128m"}).
+   */
+  public static ChildJvm start(
+      String what,
+      Class<?> main,
+      List<String> args,
+      Map<String, String> environment,
+      Path log,
+      String maxHeap) {
     requireNonNull(what, "what");
+    requireNonNull(maxHeap, "maxHeap");
     requireNonNull(main, "main");
     requireNonNull(args, "args");
     requireNonNull(environment, "environment");
@@ -55,7 +70,7 @@ public final class ChildJvm implements AutoCloseable {
     command.addAll(quiet(Runtime.version()));
     command.addAll(
         List.of(
-            "-Xmx192m",
+            "-Xmx" + maxHeap,
             "-XX:TieredStopAtLevel=1",
             "-XX:+UseSerialGC",
             "-cp",

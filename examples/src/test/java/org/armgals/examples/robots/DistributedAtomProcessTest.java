@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import org.armgals.examples.sim.ChildJvm;
 import org.junit.jupiter.api.Test;
 
 /** The JVM options of an atom's process keep its console free of the JDK's warnings. */
@@ -29,7 +30,7 @@ class DistributedAtomProcessTest {
 
   @Test
   void anAtomsJvmUsesNettyAndLibaioWithoutAWarning() throws Exception {
-    String quiet = run(DistributedAtomProcess.quiet(Runtime.version()));
+    String quiet = run(ChildJvm.quiet(Runtime.version()));
 
     assertThat(quiet).contains("netty unsafe").contains("libaio").doesNotContain("WARNING");
     if (Runtime.version().feature() >= 24) {
@@ -40,9 +41,9 @@ class DistributedAtomProcessTest {
 
   @Test
   void theUnsafeOptionIsGivenOnlyToAJdkThatKnowsIt() {
-    assertThat(DistributedAtomProcess.quiet(Runtime.Version.parse("21.0.5")))
+    assertThat(ChildJvm.quiet(Runtime.Version.parse("21.0.5")))
         .containsExactly("--enable-native-access=ALL-UNNAMED");
-    assertThat(DistributedAtomProcess.quiet(Runtime.Version.parse("25")))
+    assertThat(ChildJvm.quiet(Runtime.Version.parse("25")))
         .containsExactly(
             "--enable-native-access=ALL-UNNAMED", "--sun-misc-unsafe-memory-access=allow");
   }
