@@ -1,12 +1,7 @@
 package org.armgals.examples.cli;
 
-import java.io.IOException;
 import java.io.PrintStream;
 import java.math.BigDecimal;
-import java.nio.charset.CharacterCodingException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -40,25 +35,9 @@ final class ReplayCommand implements Callable<Integer> {
 
   @Override
   public Integer call() {
-    String text = read(trace);
-    String first = text.lines().findFirst().orElse("");
-    Replay.Header header;
-    try {
-      header = Replay.Header.parse(first);
-    } catch (IllegalArgumentException e) {
-      throw new UsageException(trace + ": " + e.getMessage());
-    }
-    Example example =
-        catalog
-            .find(header.example())
-            .orElseThrow(
-                () ->
-                    new UsageException(
-                        trace
-                            + " is a trace of example '"
-                            + header.example()
-                            + "', which this armgals does not have; 'armgals list' shows those it"
-                            + " has"));
+    TraceFile read = TraceFile.read(trace, catalog);
+    Replay.Header header = read.header();
+    Example example = read.example();
     if (!(example instanceof SimExample simulated)) {
       throw new UsageException(
           "'" + example.name() + "' does not run on the simulator: it has no trace to replay");
@@ -72,20 +51,8 @@ final class ReplayCommand implements Callable<Integer> {
         BigDecimal.valueOf(header.period().toNanos(), 6).stripTrailingZeros().toPlainString(),
         header.seed());
     Replay.Verdict verdict =
-        Replay.replay(simulated, header, text, trace.toAbsolutePath().getParent());
+        Replay.replay(simulated, header, read.text(), trace.toAbsolutePath().getParent());
     out.println(verdict.line());
     return verdict instanceof Replay.Differs ? Armgals.FAILED : 0;
-  }
-
-  static String read(Path trace) {
-    try {
-      return Files.readString(trace, StandardCharsets.UTF_8);
-    } catch (NoSuchFileException e) {
-      throw new UsageException("no trace at " + trace + "; 'armgals run' leaves one in its --out");
-    } catch (CharacterCodingException e) {
-      throw new UsageException(trace + ": not an armgals trace: it is not UTF-8 text");
-    } catch (IOException e) {
-      throw new UsageException("cannot read " + trace + ": " + e);
-    }
   }
 }

@@ -62,27 +62,14 @@ final class ViewCommand implements Callable<Integer> {
       throw new UsageException(
           "no trace in " + trace + ": expected the output directory of 'armgals run'");
     }
-    String text = ReplayCommand.read(file);
-    Replay.Header header;
-    try {
-      header = Replay.Header.parse(text.lines().findFirst().orElse(""));
-    } catch (IllegalArgumentException e) {
-      throw new UsageException(file + ": " + e.getMessage());
-    }
-    Example example =
-        catalog
-            .find(header.example())
-            .orElseThrow(
-                () ->
-                    new UsageException(
-                        file
-                            + " is a trace of example '"
-                            + header.example()
-                            + "', which this armgals does not have"));
+    TraceFile read = TraceFile.read(file, catalog);
+    Replay.Header header = read.header();
+    Example example = read.example();
     if (!(example instanceof SimExample simulated)) {
       throw new UsageException("'" + example.name() + "' does not run on the simulator");
     }
-    Playback playback = Playback.read(simulated, header, text, file.toAbsolutePath().getParent());
+    Playback playback =
+        Playback.read(simulated, header, read.text(), file.toAbsolutePath().getParent());
     try (LiveServer server = LiveServer.start(port)) {
       Player player = new Player(playback, server, header.period(), TimeSource.system(), paused);
       server.onControl(player::command);
