@@ -34,7 +34,12 @@ public final class BackoffIdleStrategy implements IdleStrategy {
   private final long maxYields;
   private final long minParkNanos;
   private final long maxParkNanos;
-  private final @Nullable LongConsumer parker;
+
+  /**
+   * Parks for the nanoseconds it is given: {@link LockSupport#parkNanos} unless a test gave one.
+   */
+  private final LongConsumer parker;
+
   private Phase phase = Phase.NOT_IDLE;
   private long steps;
   private long parkNanos;
@@ -85,7 +90,7 @@ public final class BackoffIdleStrategy implements IdleStrategy {
     this.maxYields = maxYields;
     this.minParkNanos = saturatedNanos(minPark);
     this.maxParkNanos = saturatedNanos(maxPark);
-    this.parker = parker;
+    this.parker = parker != null ? parker : nanos -> LockSupport.parkNanos(this, nanos);
     this.parkNanos = minParkNanos;
   }
 
@@ -119,12 +124,7 @@ public final class BackoffIdleStrategy implements IdleStrategy {
   }
 
   private void park(long nanos) {
-    LongConsumer p = parker;
-    if (p == null) {
-      LockSupport.parkNanos(this, nanos);
-    } else {
-      p.accept(nanos);
-    }
+    parker.accept(nanos);
   }
 
   @Override

@@ -32,7 +32,11 @@ public final class DeadlinePacer {
 
   private final TimeSource time;
   private final long spinNanos;
-  private final @Nullable LongConsumer parker;
+
+  /**
+   * Parks for the nanoseconds it is given: {@link LockSupport#parkNanos} unless a test gave one.
+   */
+  private final LongConsumer parker;
 
   private DeadlinePacer(TimeSource time, Duration spin, @Nullable LongConsumer parker) {
     this.time = requireNonNull(time, "time");
@@ -41,7 +45,7 @@ public final class DeadlinePacer {
       throw new IllegalArgumentException("spin margin must be >= 0, was " + spin);
     }
     this.spinNanos = spin.toNanos();
-    this.parker = parker;
+    this.parker = parker != null ? parker : nanos -> LockSupport.parkNanos(this, nanos);
   }
 
   /** A pacer on {@code time} that parks until {@link #DEFAULT_SPIN} before a deadline. */
@@ -104,12 +108,7 @@ public final class DeadlinePacer {
   }
 
   private void park(long nanos) {
-    LongConsumer p = parker;
-    if (p == null) {
-      LockSupport.parkNanos(this, nanos);
-    } else {
-      p.accept(nanos);
-    }
+    parker.accept(nanos);
   }
 
   @Override
