@@ -98,11 +98,6 @@ public final class Asking implements SimExample {
         public Optional<Reflection> reflection() {
           return Optional.of(reflection);
         }
-
-        @Override
-        public void close() {
-          reflection.close();
-        }
       };
     } catch (RuntimeException | Error e) {
       reflection.close();

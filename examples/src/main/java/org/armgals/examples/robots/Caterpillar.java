@@ -224,11 +224,6 @@ public final class Caterpillar implements SimExample {
     }
 
     @Override
-    public void close() {
-      loop.close();
-    }
-
-    @Override
     public List<Summary.Entry> figures() {
       int bonds = 0;
       for (int id : sim.atomIds()) {

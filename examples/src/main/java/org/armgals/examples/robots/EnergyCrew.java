@@ -92,11 +92,6 @@ final class EnergyCrew implements Crew {
     return Optional.of(reflection);
   }
 
-  @Override
-  public void close() {
-    reflection.close();
-  }
-
   EnergyRobot robot() {
     return robot;
   }

@@ -25,11 +25,6 @@ final class ObstacleCrew implements Crew {
     return java.util.Optional.of(reflection);
   }
 
-  @Override
-  public void close() {
-    reflection.close();
-  }
-
   /** The robots, rear first. */
   List<ObstacleAtom> robots() {
     return robots;

@@ -35,11 +35,6 @@ final class ReconfigureCrew implements Crew {
     return java.util.Optional.of(reflection);
   }
 
-  @Override
-  public void close() {
-    reflection.close();
-  }
-
   /** The robots, rear first. */
   List<ReconfigureAtom> robots() {
     return robots;

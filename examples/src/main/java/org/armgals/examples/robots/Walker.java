@@ -138,11 +138,6 @@ public final class Walker implements SimExample {
       public List<Summary.Entry> figures() {
         return List.of(new Summary.Entry("module errors", Long.toString(robot.errors())));
       }
-
-      @Override
-      public void close() {
-        reflection.close();
-      }
     };
   }
 

@@ -43,7 +43,12 @@ public interface Crew extends AutoCloseable {
     return reflection().map(r -> r.finish(dir)).orElse(List.of());
   }
 
-  /** Stops what the crew started (islands, runtimes, processes); the default does nothing. */
+  /**
+   * Stops what the crew started (islands, runtimes, processes); the default closes the {@link
+   * #reflection()}, if any.
+   */
   @Override
-  default void close() {}
+  default void close() {
+    reflection().ifPresent(Reflection::close);
+  }
 }
