@@ -5,6 +5,7 @@ import static java.util.Objects.requireNonNull;
 import java.time.Duration;
 import java.util.Locale;
 import org.armgals.examples.run.RunSettings;
+import org.armgals.examples.sim.BrokerLogin;
 import org.armgals.examples.sim.Crew;
 import org.armgals.examples.sim.Journal;
 import org.armgals.examples.sim.SimExample;
@@ -121,13 +122,10 @@ public final class Distributed implements SimExample {
     requireNonNull(sim, "sim");
     requireNonNull(settings, "settings");
     requireNonNull(journal, "journal");
-    String user = System.getenv(DistributedAtomMain.USER);
-    String password = System.getenv(DistributedAtomMain.PASSWORD);
     return DistributedCrew.start(
         sim,
         settings.broker().map(Object::toString).orElse(null),
-        user == null ? "" : user,
-        password == null ? "" : password,
+        BrokerLogin.fromEnvironment(),
         settings,
         journal);
   }

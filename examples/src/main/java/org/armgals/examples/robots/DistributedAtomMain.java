@@ -9,6 +9,7 @@ import org.armgals.active.ActiveRuntime;
 import org.armgals.active.Address;
 import org.armgals.active.ShutdownMode;
 import org.armgals.active.jms.JmsTransport;
+import org.armgals.examples.sim.BrokerLogin;
 import org.armgals.examples.sim.LoopRecord;
 import org.armgals.gals.Emission;
 import org.armgals.gals.Island;
@@ -37,11 +38,10 @@ import org.armgals.representation.p.PState;
  * <p>Arguments: atom id, index in the chain, atoms in the chain, broker URL, topic prefix, the
  * world's address (runtime and id), the island's period in nanoseconds, the battery's capacity in
  * J, the file its robot's side of the reflective loop's record goes to when it leaves. The broker's
- * credentials, if any, come in the environment ({@value #USER}, {@value #PASSWORD}).
+ * credentials, if any, come in the environment ({@value BrokerLogin#USER}, {@value
+ * BrokerLogin#PASSWORD}).
  */
 final class DistributedAtomMain {
-  static final String USER = "ARMGALS_BROKER_USER";
-  static final String PASSWORD = "ARMGALS_BROKER_PASSWORD";
 
   private DistributedAtomMain() {}
 
@@ -85,16 +85,12 @@ final class DistributedAtomMain {
     Path loopFile = Path.of(args[9]);
     long pid = ProcessHandle.current().pid();
     String name = "atom" + atom + "-" + pid;
-    String user = System.getenv(USER);
     JmsTransport.Builder builder =
-        Kernel.allowKernelEvents(
-            JmsTransport.builder().prefix(prefix).allow(DistributedWire.ALLOWED));
-    if (user == null) {
-      builder.broker(url);
-    } else {
-      String password = System.getenv(PASSWORD);
-      builder.broker(url, user, password == null ? "" : password);
-    }
+        BrokerLogin.fromEnvironment()
+            .on(
+                Kernel.allowKernelEvents(
+                    JmsTransport.builder().prefix(prefix).allow(DistributedWire.ALLOWED)),
+                url);
     DistributedRemoteBody body = new DistributedRemoteBody(atom);
     Notified notified = new Notified(DistributedCrawler.robotName(atom));
     // The robot's side of the loop, at the world's cycle of the last readings.

@@ -4,7 +4,7 @@ import static java.util.Objects.requireNonNull;
 
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Map;
+import org.armgals.examples.sim.BrokerLogin;
 import org.armgals.examples.sim.ChildJvm;
 
 /**
@@ -28,17 +28,17 @@ final class DistributedAtomProcess implements AutoCloseable {
    *
    * @throws IllegalStateException the process could not be started, naming the atom and why
    */
-  static DistributedAtomProcess start(
-      int atom, List<String> args, Path log, String user, String password) {
-    requireNonNull(user, "user");
-    Map<String, String> environment =
-        user.isEmpty()
-            ? Map.of()
-            : Map.of(DistributedAtomMain.USER, user, DistributedAtomMain.PASSWORD, password);
+  static DistributedAtomProcess start(int atom, List<String> args, Path log, BrokerLogin login) {
+    requireNonNull(login, "login");
     return new DistributedAtomProcess(
         atom,
         ChildJvm.start(
-            "the JVM of atom " + atom, DistributedAtomMain.class, args, environment, log, "128m"));
+            "the JVM of atom " + atom,
+            DistributedAtomMain.class,
+            args,
+            login.environment(),
+            log,
+            "128m"));
   }
 
   int atom() {

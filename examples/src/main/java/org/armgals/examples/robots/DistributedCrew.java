@@ -31,6 +31,7 @@ import org.armgals.active.jms.EmbeddedBroker;
 import org.armgals.active.jms.JmsTransport;
 import org.armgals.examples.run.RunSettings;
 import org.armgals.examples.run.Summary;
+import org.armgals.examples.sim.BrokerLogin;
 import org.armgals.examples.sim.Crew;
 import org.armgals.examples.sim.Journal;
 import org.armgals.examples.sim.LoopRecord;
@@ -120,8 +121,7 @@ final class DistributedCrew implements Crew {
   static DistributedCrew start(
       Simulation sim,
       @Nullable String url,
-      String user,
-      String password,
+      BrokerLogin login,
       RunSettings settings,
       Journal journal) {
     requireNonNull(sim, "sim");
@@ -131,7 +131,7 @@ final class DistributedCrew implements Crew {
     DistributedCrew crew =
         new DistributedCrew(sim, settings.realTime() ? period : LOCKSTEP_WAIT, settings, journal);
     try {
-      crew.open(url, user, password, settings.out(), period);
+      crew.open(url, login, settings.out(), period);
       return crew;
     } catch (RuntimeException | Error e) {
       crew.close();
@@ -139,19 +139,16 @@ final class DistributedCrew implements Crew {
     }
   }
 
-  private void open(
-      @Nullable String url, String givenUser, String givenPassword, Path logs, Duration period) {
+  private void open(@Nullable String url, BrokerLogin given, Path logs, Duration period) {
     String brokerUrl;
-    String user = givenUser;
-    String password = givenPassword;
+    BrokerLogin login = given;
     if (url == null) {
       // The embedded broker requires the login it generates for this run; the atoms' JVMs get it
       // in their environment.
       EmbeddedBroker b = EmbeddedBroker.start(freePort());
       broker = b;
       brokerUrl = b.nettyUrl().orElseThrow();
-      user = b.user();
-      password = b.password();
+      login = BrokerLogin.of(b);
     } else {
       brokerUrl = url;
     }
@@ -164,12 +161,7 @@ final class DistributedCrew implements Crew {
       if (url != null) {
         probe(url);
       }
-      if (user.isEmpty()) {
-        builder.broker(brokerUrl);
-      } else {
-        builder.broker(brokerUrl, user, password);
-      }
-      transport = builder.build();
+      transport = login.on(builder, brokerUrl).build();
     } catch (RuntimeException e) {
       if (url == null) {
         throw e;
@@ -180,9 +172,9 @@ final class DistributedCrew implements Crew {
               + " ("
               + rootMessage(e)
               + "): start it, check the URL (and "
-              + DistributedAtomMain.USER
+              + BrokerLogin.USER
               + "/"
-              + DistributedAtomMain.PASSWORD
+              + BrokerLogin.PASSWORD
               + " if it needs a login), or leave --broker out to run on an embedded broker",
           e);
     }
@@ -212,8 +204,7 @@ final class DistributedCrew implements Crew {
               DistributedAtomMain.args(
                   atom, i, ids.size(), brokerUrl, prefix, m.address(), period, capacity, loopFile),
               logs.resolve("atom-" + atom + ".log"),
-              user,
-              password);
+              login);
       processes.add(p);
       p.handle().onExit().thenRun(() -> w.ended(atom));
     }

@@ -44,29 +44,7 @@ public final class MetaMain {
   /** How long it waits, at the end, for the answers to the robots' last instants. */
   static final Duration SETTLE = Duration.ofSeconds(30);
 
-  /** The broker's user, in a meta level's JVM's environment (never on its command line). */
-  static final String USER = "ARMGALS_BROKER_USER";
-
-  /** The broker's password, in a meta level's JVM's environment. */
-  static final String PASSWORD = "ARMGALS_BROKER_PASSWORD";
-
   private MetaMain() {}
-
-  private static JmsTransport.Builder login(JmsTransport.Builder builder, String url) {
-    String user = System.getenv(USER);
-    return user == null
-        ? builder.broker(url)
-        : builder.broker(
-            url, user, java.util.Objects.requireNonNullElse(System.getenv(PASSWORD), ""));
-  }
-
-  private static Presence.Builder login(Presence.Builder builder, String url) {
-    String user = System.getenv(USER);
-    return user == null
-        ? builder.broker(url)
-        : builder.broker(
-            url, user, java.util.Objects.requireNonNullElse(System.getenv(PASSWORD), ""));
-  }
 
   /** The arguments of a meta level's JVM for a run of {@code example} with {@code settings}. */
   static List<String> args(String example, String url, String prefix, RunSettings settings) {
@@ -109,17 +87,19 @@ public final class MetaMain {
         sim.metaLevel(settings)
             .orElseThrow(() -> new IllegalArgumentException(example + " has no meta level"));
     String name = "meta-" + ProcessHandle.current().pid();
+    BrokerLogin login = BrokerLogin.fromEnvironment();
     LoopRecorder recorder =
         new LoopRecorder(settings.period().toNanos(), null, org.armgals.active.TimeSource.system());
     try (JmsTransport transport =
-        Kernel.allowKernelEvents(login(JmsTransport.builder().prefix(prefix), url)).build()) {
+        Kernel.allowKernelEvents(login.on(JmsTransport.builder().prefix(prefix), url)).build()) {
       ActiveRuntime runtime =
           ActiveRuntime.builder().name(name).workers(2).jmx(false).transport(transport).build();
       Kernel kernel =
           org.armgals.kernel.StructuralMeta.bootstrap(
               runtime, KernelOptions.defaults().withJmx(true).withListener(recorder));
       Presence presence =
-          login(Presence.builder(), url)
+          login
+              .on(Presence.builder(), url)
               .prefix(prefix)
               .runtime(name)
               .listener(kernel.presenceListener())

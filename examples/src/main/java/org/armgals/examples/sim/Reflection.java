@@ -91,8 +91,7 @@ public final class Reflection implements AutoCloseable {
   private @Nullable ChildJvm metaJvm;
   private @Nullable String brokerUrl;
   private @Nullable String prefix;
-  private String user = "";
-  private String password = "";
+  private BrokerLogin login = BrokerLogin.NONE;
   private List<Summary.Entry> metaFigures = List.of();
   private boolean finished;
 
@@ -144,7 +143,8 @@ public final class Reflection implements AutoCloseable {
     recorder.ignore(kernel.basicBehavioralMeta().address());
     if (remote) {
       presence =
-          login(Presence.builder(), requireNonNull(brokerUrl, "brokerUrl"))
+          login
+              .on(Presence.builder(), requireNonNull(brokerUrl, "brokerUrl"))
               .prefix(requireNonNull(prefix, "prefix"))
               .runtime(name)
               .listener(kernel.presenceListener())
@@ -222,34 +222,23 @@ public final class Reflection implements AutoCloseable {
 
   /**
    * The transport of the robots' runtime: to {@code --broker} (with the login of {@value
-   * MetaMain#USER} and {@value MetaMain#PASSWORD} in the environment, if any), or to an embedded
-   * broker over netty on a free port of 127.0.0.1, which requires the login it generates for this
-   * run; the meta level's JVM gets the login in its environment.
+   * BrokerLogin#USER} and {@value BrokerLogin#PASSWORD} in the environment, if any), or to an
+   * embedded broker over netty on a free port of 127.0.0.1, which requires the login it generates
+   * for this run; the meta level's JVM gets the login in its environment.
    */
   private JmsTransport connect(String name) {
     if (settings.broker().isPresent()) {
       brokerUrl = settings.broker().get().toString();
-      user = java.util.Objects.requireNonNullElse(System.getenv(MetaMain.USER), "");
-      password = java.util.Objects.requireNonNullElse(System.getenv(MetaMain.PASSWORD), "");
+      login = BrokerLogin.fromEnvironment();
     } else {
       EmbeddedBroker b = EmbeddedBroker.start(freePort());
       broker = b;
       brokerUrl = b.nettyUrl().orElseThrow();
-      user = b.user();
-      password = b.password();
+      login = BrokerLogin.of(b);
     }
     prefix = "armgals-" + name;
-    JmsTransport.Builder b = JmsTransport.builder().prefix(prefix);
-    if (user.isEmpty()) {
-      b.broker(brokerUrl);
-    } else {
-      b.broker(brokerUrl, user, password);
-    }
-    return Kernel.allowKernelEvents(b).build();
-  }
-
-  private Presence.Builder login(Presence.Builder builder, String url) {
-    return user.isEmpty() ? builder.broker(url) : builder.broker(url, user, password);
+    return Kernel.allowKernelEvents(login.on(JmsTransport.builder().prefix(prefix), brokerUrl))
+        .build();
   }
 
   /** The kernel the robots are entities of. */
@@ -355,7 +344,7 @@ public final class Reflection implements AutoCloseable {
             "the meta level's JVM",
             MetaMain.class,
             MetaMain.args(example, requireNonNull(brokerUrl), requireNonNull(prefix), settings),
-            user.isEmpty() ? Map.of() : Map.of(MetaMain.USER, user, MetaMain.PASSWORD, password),
+            login.environment(),
             out.resolve(META_LOG));
     metaJvm = child;
     awaitFile(child, out.resolve(META_READY));
