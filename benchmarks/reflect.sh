@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The reflective loop's figures: benchmarks/reflect.sh [--runs n] [--seconds s] [--missed-seconds s]
-#                                [--rounds n] [--cycles n] [--no-build] [name...]
+#                                [--warmup-seconds s] [--rounds n] [--cycles n] [--no-build] [name...]
 #
 #   name   notify-cost latency missed (default: all); each prints, details on stderr:
 #            reflect name=notify-cost pacing=<lockstep|free|realtime> atoms=4 cost_ns=<c>
@@ -13,13 +13,15 @@
 #            reflect name=latency meta=<local|remote> hz=100 runs requests p50_cycles
 #              p99_cycles (min-max) p50_us p99_us (min-max) load   (medians over the runs)
 #              (the benchmark's example reflect-asking, free at 100 Hz: notified to applied)
-#            reflect name=missed-run robot=caterpillar meta=remote hz=100 seconds missed overruns
-#              requests load   (each run, in a JVM of its own, as ./armgals run caterpillar
-#              --realtime --meta remote --seconds s would)
-#            reflect name=missed ... runs missed=<median> (min-max) load
+#            reflect name=missed-run robot=caterpillar meta=remote hz=100 seconds warmup_s missed
+#              overruns requests load   (each run, in a JVM of its own, as ./armgals run
+#              caterpillar --realtime --meta remote --seconds s --warmup-seconds w would)
+#            reflect name=missed ... warmup_s runs missed=<median> (min-max) load
 #   --runs            runs of latency (each meta place) and of missed (default 3)
 #   --seconds         length of a latency run, simulated = real seconds (default 30)
 #   --missed-seconds  length of a missed run (default 60)
+#   --warmup-seconds  simulated seconds each missed run warms up first, thrown away, as ./armgals run
+#                     does before a paced run (default 5, as there; 0 for none)
 #   --rounds, --cycles  notify-cost's measured rounds per pacing (default 5) and cycles per round
 #                     (default 3000; realtime rounds take at most 500)
 #   --no-build        use benchmarks/target/benchmarks.jar as it is
@@ -42,10 +44,10 @@ names=()
 while (($#)); do
   case "$1" in
     --runs) runs="${2:?--runs needs a count}"; shift 2 ;;
-    --seconds | --missed-seconds | --rounds | --cycles)
+    --seconds | --missed-seconds | --warmup-seconds | --rounds | --cycles)
       args+=("$1" "${2:?$1 needs a value}"); shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,32p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,33p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     notify-cost | latency | missed) names+=("$1"); shift ;;
     *) echo "reflect.sh: unknown option or name '$1' (try --help)" >&2; exit 2 ;;
   esac
@@ -80,15 +82,18 @@ for name in "${names[@]}"; do
     missed) # a JVM of its own for each run, as ./armgals run would
       missed=()
       seconds=""
+      warmup=""
       for ((i = 0; i < runs; i++)); do
         line="$(reflect --runs 1 missed | grep '^reflect name=missed-run')"
         echo "$line"
         missed+=("$(sed -n 's/.* missed=\([0-9]*\).*/\1/p' <<<"$line")")
         seconds="$(sed -n 's/.* seconds=\([^ ]*\).*/\1/p' <<<"$line")"
+        warmup="$(sed -n 's/.* warmup_s=\([^ ]*\).*/\1/p' <<<"$line")"
       done
       mapfile -t sorted < <(printf '%s\n' "${missed[@]}" | sort -n)
       n=${#sorted[@]}
-      echo "reflect name=missed robot=caterpillar meta=remote hz=100 seconds=$seconds runs=$n" \
+      echo "reflect name=missed robot=caterpillar meta=remote hz=100 seconds=$seconds" \
+        "warmup_s=$warmup runs=$n" \
         "missed=${sorted[$(((n - 1) / 2))]} (${sorted[0]}-${sorted[$((n - 1))]})" \
         "load=$(cut -d' ' -f1 /proc/loadavg)"
       ;;

@@ -34,12 +34,14 @@ import org.armgals.examples.sim.SimExample;
  *       alternated; from each run's summary, the cycles and the real time from a notification to
  *       the request decided on it being applied, median and p99;
  *   <li>{@code missed}: the caterpillar run paced to real time with its meta in another JVM, as
- *       {@code armgals run caterpillar --realtime --meta remote} does; the cycles it missed.
+ *       {@code armgals run caterpillar --realtime --meta remote} does, after the same warm-up
+ *       ({@code --warmup-seconds}, default {@link RunSettings#DEFAULT_WARMUP}; 0 for none); the
+ *       cycles it missed.
  * </ul>
  *
- * <p>Usage: {@code Reflect [--runs n] [--seconds s] [--missed-seconds s] [--rounds n] [--cycles n]
- * [--out dir] [name...]}; every line ends with {@code load=<1-minute load average>} read when its
- * figure was taken.
+ * <p>Usage: {@code Reflect [--runs n] [--seconds s] [--missed-seconds s] [--warmup-seconds s]
+ * [--rounds n] [--cycles n] [--out dir] [name...]}; every line ends with {@code load=<1-minute load
+ * average>} read when its figure was taken.
  */
 public final class Reflect {
   private static final Duration PERIOD = Duration.ofMillis(10);
@@ -57,6 +59,7 @@ public final class Reflect {
     int runs = 3;
     double seconds = 30;
     double missedSeconds = 60;
+    double warmupSeconds = RunSettings.DEFAULT_WARMUP.toNanos() / 1e9;
     int rounds = 5;
     int cycles = 3000;
     Path out = Path.of("benchmarks", "target", "reflect");
@@ -67,6 +70,9 @@ public final class Reflect {
         case "--seconds" -> seconds = positive(Args.value(args, ++i, "--seconds"), "--seconds");
         case "--missed-seconds" ->
             missedSeconds = positive(Args.value(args, ++i, "--missed-seconds"), "--missed-seconds");
+        case "--warmup-seconds" ->
+            warmupSeconds =
+                notNegative(Args.value(args, ++i, "--warmup-seconds"), "--warmup-seconds");
         case "--rounds" -> rounds = Args.count(Args.value(args, ++i, "--rounds"), "--rounds", 1);
         case "--cycles" -> cycles = Args.count(Args.value(args, ++i, "--cycles"), "--cycles", 100);
         case "--out" -> out = Path.of(Args.value(args, ++i, "--out"));
@@ -83,10 +89,22 @@ public final class Reflect {
       switch (name) {
         case "notify-cost" -> new NotifyCost(PERIOD, rounds, cycles, out).run();
         case "latency" -> latency(runs, seconds, out);
-        case "missed" -> missed(runs, missedSeconds, out);
+        case "missed" -> missed(runs, missedSeconds, warmupSeconds, out);
         default -> throw new AssertionError(name);
       }
     }
+  }
+
+  private static double notNegative(String text, String option) {
+    try {
+      double d = Double.parseDouble(text);
+      if (d >= 0 && Double.isFinite(d)) {
+        return d;
+      }
+    } catch (NumberFormatException e) {
+      // told below
+    }
+    throw new IllegalArgumentException(option + " must be 0 or more, was '" + text + "'");
   }
 
   private static double positive(String text, String option) {
@@ -159,8 +177,11 @@ public final class Reflect {
     }
   }
 
-  /** The caterpillar, free at 100 Hz, its meta remote, {@code runs} times. */
-  static void missed(int runs, double seconds, Path out) {
+  /**
+   * The caterpillar, free at 100 Hz, its meta remote, {@code runs} times, each after a warm-up of
+   * {@code warmup} simulated seconds.
+   */
+  static void missed(int runs, double seconds, double warmup, Path out) {
     List<Long> missed = new ArrayList<>();
     for (int r = 0; r < runs; r++) {
       String load = load();
@@ -170,14 +191,16 @@ public final class Reflect {
               true,
               RunSettings.MetaPlace.REMOTE,
               seconds,
+              warmup,
               out.resolve("missed-" + r));
       Loop l = loop(s);
       missed.add(l.missed);
       System.out.printf(
           Locale.ROOT,
-          "reflect name=missed-run robot=caterpillar meta=remote hz=100 seconds=%s missed=%d"
-              + " overruns=%d requests=%d load=%s%n",
+          "reflect name=missed-run robot=caterpillar meta=remote hz=100 seconds=%s warmup_s=%s"
+              + " missed=%d overruns=%d requests=%d load=%s%n",
           seconds,
+          warmup,
           l.missed,
           l.overruns,
           l.requests,
@@ -185,9 +208,10 @@ public final class Reflect {
     }
     System.out.printf(
         Locale.ROOT,
-        "reflect name=missed robot=caterpillar meta=remote hz=100 seconds=%s runs=%d missed=%d"
-            + " (%d-%d) load=%s%n",
+        "reflect name=missed robot=caterpillar meta=remote hz=100 seconds=%s warmup_s=%s runs=%d"
+            + " missed=%d (%d-%d) load=%s%n",
         seconds,
+        warmup,
         runs,
         median(missed),
         missed.stream().mapToLong(Long::longValue).min().orElse(0),
@@ -198,6 +222,17 @@ public final class Reflect {
   /** Runs {@code example} as {@code armgals run} does, its progress and summary on stderr. */
   static Summary run(
       SimExample example, boolean realTime, RunSettings.MetaPlace place, double seconds, Path out) {
+    return run(example, realTime, place, seconds, 0, out);
+  }
+
+  /** As above, after a warm-up of {@code warmup} simulated seconds (paced runs only). */
+  static Summary run(
+      SimExample example,
+      boolean realTime,
+      RunSettings.MetaPlace place,
+      double seconds,
+      double warmup,
+      Path out) {
     try {
       Files.createDirectories(out);
     } catch (IOException e) {
@@ -213,7 +248,8 @@ public final class Reflect {
             realTime,
             Optional.empty(),
             out,
-            place);
+            place,
+            Duration.ofNanos(Math.round(warmup * 1e9)));
     PrintStream err = System.err;
     Summary summary = example.run(settings, err);
     for (Summary.Entry e : summary.entries()) {

@@ -84,6 +84,15 @@ final class RunCommand implements Callable<Integer> {
       description = "with --live: simulated seconds per real second (default 1)")
   Double speed;
 
+  @Option(
+      names = "--warmup-seconds",
+      paramLabel = "<s>",
+      description =
+          "paced to real time: simulated seconds to run first, in virtual time on a scratch copy of"
+              + " the world, and throw away, so that the first paced cycles run compiled code"
+              + " (default 5 when paced, 0 for robots in JVMs of their own)")
+  Double warmupSeconds;
+
   @Option(names = "--broker", paramLabel = "<url>", description = "an external Artemis broker")
   URI broker;
 
@@ -125,10 +134,11 @@ final class RunCommand implements Callable<Integer> {
             Duration.ofMillis(periodMs),
             seed,
             Optional.ofNullable(atoms),
-            realTime,
+            realTime || live,
             Optional.ofNullable(broker),
             outDir == null ? Path.of("runs", example.name()) : outDir,
-            meta);
+            meta,
+            warmup(example));
     Summary summary = live ? live(example, settings) : example.run(settings, out);
     out.println();
     out.println("summary of " + example.name() + ":");
@@ -182,20 +192,58 @@ final class RunCommand implements Callable<Integer> {
   }
 
   /**
+   * {@code --warmup-seconds} as given, or the default: {@link RunSettings#DEFAULT_WARMUP} for a run
+   * paced to real time of robots in this JVM, none otherwise.
+   */
+  private Duration warmup(Example example) {
+    boolean paced = realTime || live;
+    boolean here = example instanceof SimExample simulated && !simulated.usesBroker();
+    if (warmupSeconds == null) {
+      return paced && here ? RunSettings.DEFAULT_WARMUP : Duration.ZERO;
+    }
+    if (warmupSeconds < 0) {
+      throw new IllegalArgumentException(
+          "--warmup-seconds must be 0 or more, was "
+              + BigDecimal.valueOf(warmupSeconds).stripTrailingZeros().toPlainString());
+    }
+    if (warmupSeconds == 0) {
+      return Duration.ZERO;
+    }
+    if (!paced) {
+      throw new UsageException(
+          "--warmup-seconds applies to a run paced to real time: add --realtime or --live");
+    }
+    if (!here) {
+      throw new UsageException(
+          "--warmup-seconds does not apply to '"
+              + example.name()
+              + "': its robots run in JVMs of their own, which a warm-up in this one would not"
+              + " warm");
+    }
+    return seconds("--warmup-seconds", warmupSeconds);
+  }
+
+  /**
    * {@code --seconds} as a duration: positive, at least a nanosecond, and at most what a count of
    * nanoseconds holds (292 years), so that no run silently lasts one cycle.
    */
   static Duration simulated(double seconds) {
+    return seconds("--seconds", seconds);
+  }
+
+  /** {@code option}'s value in seconds as a duration, checked as {@link #simulated} says. */
+  static Duration seconds(String option, double seconds) {
     if (!Double.isFinite(seconds)) {
-      throw new IllegalArgumentException("--seconds must be positive and finite, was " + seconds);
+      throw new IllegalArgumentException(option + " must be positive and finite, was " + seconds);
     }
     String given = BigDecimal.valueOf(seconds).stripTrailingZeros().toPlainString();
     if (!(seconds > 0)) {
-      throw new IllegalArgumentException("--seconds must be positive and finite, was " + given);
+      throw new IllegalArgumentException(option + " must be positive and finite, was " + given);
     }
     if (seconds > MAX_SECONDS) {
       throw new IllegalArgumentException(
-          "--seconds must be at most "
+          option
+              + " must be at most "
               + MAX_SECONDS
               + " (292 years of simulated time, the most a run can count in nanoseconds), was "
               + given);
@@ -203,7 +251,7 @@ final class RunCommand implements Callable<Integer> {
     long nanos = Math.round(seconds * 1e9);
     if (nanos < 1) {
       throw new IllegalArgumentException(
-          "--seconds must be at least a nanosecond (0.000000001), was " + given);
+          option + " must be at least a nanosecond (0.000000001), was " + given);
     }
     return Duration.ofNanos(nanos);
   }

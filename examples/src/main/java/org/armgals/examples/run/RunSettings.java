@@ -20,6 +20,9 @@ import java.util.OptionalLong;
  * @param broker an external Artemis broker, instead of the embedded one
  * @param out where the run leaves its trace and pictures
  * @param meta where the robots' meta level runs: in their JVM, or in another one over the broker
+ * @param warmup paced to real time, how much simulated time to run first on a scratch copy of the
+ *     world, in virtual time, and throw away, so that the JVM has compiled what a cycle runs before
+ *     the first paced cycle (zero for none; see {@link #DEFAULT_WARMUP})
  */
 public record RunSettings(
     OptionalLong cycles,
@@ -30,7 +33,16 @@ public record RunSettings(
     boolean realTime,
     Optional<URI> broker,
     Path out,
-    MetaPlace meta) {
+    MetaPlace meta,
+    Duration warmup) {
+
+  /**
+   * The warm-up {@code armgals run} gives a run paced to real time unless told otherwise: long
+   * enough for the JIT compiler to have compiled the physics, the robots and their meta level,
+   * whose first cycles otherwise run several times slower than the period and leave the run behind
+   * its schedule for its first seconds.
+   */
+  public static final Duration DEFAULT_WARMUP = Duration.ofSeconds(5);
 
   /** Where a run's meta level runs ({@code --meta}). */
   public enum MetaPlace {
@@ -40,7 +52,21 @@ public record RunSettings(
     REMOTE
   }
 
-  /** Settings with the meta level in the robots' JVM. */
+  /** Settings without a warm-up. */
+  public RunSettings(
+      OptionalLong cycles,
+      Optional<Duration> simulated,
+      Duration period,
+      long seed,
+      Optional<Integer> atoms,
+      boolean realTime,
+      Optional<URI> broker,
+      Path out,
+      MetaPlace meta) {
+    this(cycles, simulated, period, seed, atoms, realTime, broker, out, meta, Duration.ZERO);
+  }
+
+  /** Settings with the meta level in the robots' JVM, without a warm-up. */
   public RunSettings(
       OptionalLong cycles,
       Optional<Duration> simulated,
@@ -62,6 +88,7 @@ public record RunSettings(
     requireNonNull(broker, "broker");
     requireNonNull(out, "out");
     requireNonNull(meta, "meta");
+    requireNonNull(warmup, "warmup");
     if (cycles.isPresent() && simulated.isPresent()) {
       throw new IllegalArgumentException("give --cycles or --seconds, not both");
     }
@@ -77,15 +104,56 @@ public record RunSettings(
     if (atoms.isPresent() && atoms.get() < 1) {
       throw new IllegalArgumentException("--atoms must be at least 1, not " + atoms.get());
     }
+    if (warmup.isNegative()) {
+      throw new IllegalArgumentException("--warmup-seconds must not be negative, not " + warmup);
+    }
+    if (!warmup.isZero() && !realTime) {
+      throw new IllegalArgumentException(
+          "--warmup-seconds applies to a run paced to real time (--realtime or --live): a run in"
+              + " virtual time has no schedule to fall behind; was "
+              + warmup);
+    }
   }
 
   /** These settings, writing into {@code out} instead. */
   public RunSettings withOut(Path out) {
-    return new RunSettings(cycles, simulated, period, seed, atoms, realTime, broker, out, meta);
+    return new RunSettings(
+        cycles, simulated, period, seed, atoms, realTime, broker, out, meta, warmup);
   }
 
   /** These settings with the meta level at {@code place}. */
   public RunSettings withMeta(MetaPlace place) {
-    return new RunSettings(cycles, simulated, period, seed, atoms, realTime, broker, out, place);
+    return new RunSettings(
+        cycles, simulated, period, seed, atoms, realTime, broker, out, place, warmup);
+  }
+
+  /** These settings paced to real time, with the same warm-up. */
+  public RunSettings pacedToRealTime() {
+    return new RunSettings(cycles, simulated, period, seed, atoms, true, broker, out, meta, warmup);
+  }
+
+  /** These settings with {@code warmup} (zero for none). */
+  public RunSettings withWarmup(Duration warmup) {
+    return new RunSettings(
+        cycles, simulated, period, seed, atoms, realTime, broker, out, meta, warmup);
+  }
+
+  /**
+   * The settings of the warm-up that precedes a run with these settings: the same world and seed,
+   * {@code cycles} of them, in virtual time with the meta level in the robots' JVM, writing into
+   * {@code scratch}.
+   */
+  public RunSettings warmUp(long cycles, Path scratch) {
+    return new RunSettings(
+        OptionalLong.of(cycles),
+        Optional.empty(),
+        period,
+        seed,
+        atoms,
+        false,
+        broker,
+        scratch,
+        MetaPlace.LOCAL,
+        Duration.ZERO);
   }
 }

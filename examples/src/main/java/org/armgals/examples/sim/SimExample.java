@@ -65,17 +65,7 @@ public interface SimExample extends Example {
     if (!(speed > 0) || Double.isInfinite(speed)) {
       throw new IllegalArgumentException("--speed must be a finite number above 0, was " + speed);
     }
-    RunSettings paced =
-        new RunSettings(
-            settings.cycles(),
-            settings.simulated(),
-            settings.period(),
-            settings.seed(),
-            settings.atoms(),
-            true,
-            settings.broker(),
-            settings.out(),
-            settings.meta());
+    RunSettings paced = settings.pacedToRealTime();
     return SimRun.run(
         this, paced, out, java.util.Objects.requireNonNull(watcher, "watcher"), speed);
   }

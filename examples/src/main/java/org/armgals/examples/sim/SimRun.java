@@ -2,6 +2,7 @@ package org.armgals.examples.sim;
 
 import java.io.BufferedWriter;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.io.PrintStream;
 import java.io.UncheckedIOException;
 import java.io.Writer;
@@ -75,6 +76,9 @@ final class SimRun {
    * schedule}), for {@code armgals view}.
    */
   static final String PROGRAMS = "programs.jsonl";
+
+  /** Where a warm-up's crew writes, inside the staging directory; gone before the run starts. */
+  private static final String WARMUP = ".warmup";
 
   private SimRun() {}
 
@@ -163,6 +167,16 @@ final class SimRun {
                   " times %s",
                   new java.math.BigDecimal(speed).stripTrailingZeros().toPlainString())
               : "");
+      if (!settings.warmup().isZero()) {
+        Duration took =
+            warmUp(example, settings, staging.dir().resolve(WARMUP), clock, interruption);
+        out.printf(
+            Locale.ROOT,
+            "warmed up: %.2f s simulated in %.2f s, in virtual time on a scratch copy of the world,"
+                + " thrown away%n",
+            settings.warmup().toNanos() / 1e9,
+            took.toNanos() / 1e9);
+      }
       Recording recording = new Recording(scene.params());
       Progress progress = new Progress(out, terminal, cycles, clock);
       long ran;
@@ -196,7 +210,17 @@ final class SimRun {
             if (ran > 0) {
               loop.addAll(crew.finish(staging.dir()));
             }
-            figures = new java.util.ArrayList<>(crew.figures());
+            figures = new java.util.ArrayList<>();
+            if (!settings.warmup().isZero()) {
+              figures.add(
+                  new Summary.Entry(
+                      "warm-up",
+                      String.format(
+                          Locale.ROOT,
+                          "%.2f s simulated before the run, in virtual time, thrown away",
+                          settings.warmup().toNanos() / 1e9)));
+            }
+            figures.addAll(crew.figures());
             figures.addAll(loop);
           }
         }
@@ -229,6 +253,64 @@ final class SimRun {
       }
       return recording.summary(missed + crewMissed, figures, settings.out());
     }
+  }
+
+  /**
+   * The warm-up before a run paced to real time ({@link RunSettings#warmup()}): the same example,
+   * in the same world with the same seed, for the warm-up's length rounded up to a cycle, in
+   * virtual time with its meta level in this JVM, through the very code a run's cycles go through
+   * (trace, samples, the watcher's bookkeeping) into sinks that keep nothing; its crew writes into
+   * {@code scratch}, deleted after. What it leaves is code the JIT compiler has compiled, so that
+   * the run's first cycles take about what its later ones take instead of several periods each.
+   * Answers the real time it took; stops early when {@code interruption} is requested.
+   *
+   * @throws IllegalArgumentException if the example's robots run in JVMs of their own ({@link
+   *     SimExample#usesBroker()}), which a warm-up in this one would not warm
+   */
+  static Duration warmUp(
+      SimExample example,
+      RunSettings settings,
+      Path scratch,
+      TimeSource clock,
+      Interruption interruption) {
+    if (example.usesBroker()) {
+      throw new IllegalArgumentException(
+          "'"
+              + example.name()
+              + "' runs its robots in JVMs of their own, which a warm-up in this one would not"
+              + " warm: --warmup-seconds does not apply to it");
+    }
+    long cycles = warmUpCycles(settings.warmup(), settings.period());
+    long start = clock.nanoTime();
+    try (Staging staging = Staging.in(scratch)) {
+      RunSettings warm = settings.warmUp(cycles, staging.dir());
+      Scene scene = example.scene(warm);
+      try (Simulation sim = build(example, warm, scene, cycles, Writer.nullWriter(), 1.0)) {
+        Recording recording = new Recording(scene.params());
+        Crew crew = example.start(sim, warm, new RecordingJournal(sim, recording));
+        try {
+          Watching watching =
+              new Watching(
+                  RunWatcher.NONE, sim, scene, crew.reflection().orElse(null), Writer.nullWriter());
+          Progress progress =
+              new Progress(new PrintStream(OutputStream.nullOutputStream()), false, cycles, clock);
+          drive(sim, cycles, warm, recording, progress, interruption, watching, 1.0);
+        } finally {
+          crew.close();
+        }
+      }
+    }
+    return Duration.ofNanos(clock.nanoTime() - start);
+  }
+
+  /**
+   * The cycles a warm-up of {@code warmup} runs at {@code period}: rounded up, so that a warm-up of
+   * any length runs at least one.
+   */
+  static long warmUpCycles(Duration warmup, Duration period) {
+    long p = period.toNanos();
+    long w = warmup.toNanos();
+    return w / p + (w % p == 0 ? 0 : 1);
   }
 
   /**

@@ -12,13 +12,19 @@ import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import org.armgals.examples.run.Example;
 import org.armgals.examples.run.RunInterrupted;
 import org.armgals.examples.run.RunSettings;
 import org.armgals.examples.run.Summary;
+import org.armgals.examples.sim.Crew;
+import org.armgals.examples.sim.Journal;
 import org.armgals.examples.sim.ScriptedExample;
+import org.armgals.examples.sim.SimExample;
+import org.armgals.maam.sim.Scene;
+import org.armgals.maam.sim.Simulation;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -351,6 +357,106 @@ class ArmgalsTest {
     assertThat(r.status()).as(r.err()).isEqualTo(Armgals.USAGE);
     assertThat(r.err().lines()).hasSize(1);
     return r.err().strip();
+  }
+
+  /** The settings {@code args} give a simulated example that records them instead of running. */
+  private static Result runSimulated(List<RunSettings> runs, boolean usesBroker, String... args) {
+    ScriptedExample scripted = new ScriptedExample("simulated", usesBroker);
+    SimExample simulated =
+        new SimExample() {
+          @Override
+          public String name() {
+            return scripted.name();
+          }
+
+          @Override
+          public String summary() {
+            return scripted.summary();
+          }
+
+          @Override
+          public Scene scene(RunSettings settings) {
+            return scripted.scene(settings);
+          }
+
+          @Override
+          public Duration defaultDuration() {
+            return scripted.defaultDuration();
+          }
+
+          @Override
+          public boolean usesBroker() {
+            return scripted.usesBroker();
+          }
+
+          @Override
+          public Crew start(Simulation sim, RunSettings settings, Journal journal) {
+            return scripted.start(sim, settings, journal);
+          }
+
+          @Override
+          public Summary run(RunSettings settings, PrintStream out) {
+            runs.add(settings);
+            return new Summary(List.of());
+          }
+        };
+    ByteArrayOutputStream out = new ByteArrayOutputStream();
+    ByteArrayOutputStream err = new ByteArrayOutputStream();
+    int status;
+    try (PrintStream o = new PrintStream(out, true, StandardCharsets.UTF_8);
+        PrintStream e = new PrintStream(err, true, StandardCharsets.UTF_8)) {
+      status = Armgals.execute(Catalog.of(List.of(simulated)), o, e, args);
+    }
+    return new Result(
+        status, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+  }
+
+  @Test
+  void aRunPacedToRealTimeIsWarmedUpFiveSecondsUnlessToldOtherwiseAndOnlyThen() {
+    List<RunSettings> runs = new ArrayList<>();
+
+    runSimulated(runs, false, "run", "simulated", "--realtime");
+    runSimulated(runs, false, "run", "simulated");
+    runSimulated(runs, false, "run", "simulated", "--realtime", "--warmup-seconds", "1.5");
+    runSimulated(runs, false, "run", "simulated", "--realtime", "--warmup-seconds", "0");
+    runSimulated(runs, true, "run", "simulated", "--realtime");
+    run("run", "recorder", "--realtime");
+
+    assertThat(runs)
+        .extracting(RunSettings::warmup)
+        .containsExactly(
+            RunSettings.DEFAULT_WARMUP,
+            Duration.ZERO,
+            Duration.ofMillis(1500),
+            Duration.ZERO,
+            Duration.ZERO);
+    assertThat(RunSettings.DEFAULT_WARMUP).isEqualTo(Duration.ofSeconds(5));
+    assertThat(recording.runs).extracting(RunSettings::warmup).containsExactly(Duration.ZERO);
+  }
+
+  @Test
+  void aWarmUpThatCannotApplyIsRefusedInOneLineNamingWhy() {
+    List<RunSettings> runs = new ArrayList<>();
+
+    Result virtual = runSimulated(runs, false, "run", "simulated", "--warmup-seconds", "2");
+    Result negative =
+        runSimulated(runs, false, "run", "simulated", "--realtime", "--warmup-seconds", "-1");
+    Result elsewhere =
+        runSimulated(runs, true, "run", "simulated", "--realtime", "--warmup-seconds", "2");
+
+    assertThat(List.of(virtual, negative, elsewhere))
+        .allSatisfy(r -> assertThat(r.status()).isEqualTo(Armgals.USAGE));
+    assertThat(virtual.err().strip())
+        .isEqualTo(
+            "armgals: --warmup-seconds applies to a run paced to real time: add --realtime or"
+                + " --live");
+    assertThat(negative.err().strip())
+        .isEqualTo("armgals: --warmup-seconds must be 0 or more, was -1");
+    assertThat(elsewhere.err().strip())
+        .isEqualTo(
+            "armgals: --warmup-seconds does not apply to 'simulated': its robots run in JVMs of"
+                + " their own, which a warm-up in this one would not warm");
+    assertThat(runs).isEmpty();
   }
 
   @Test

@@ -270,6 +270,99 @@ class SimRunTest {
     assertThat(summary.entries()).contains(new Summary.Entry("missed cycles", "3"));
   }
 
+  /** {@code cycles} of {@code example} paced to real time into {@code out}, warmed up or not. */
+  private Run paced(SimExample example, long cycles, Path out, Duration warmup) {
+    RunSettings settings =
+        new RunSettings(
+            OptionalLong.of(cycles),
+            Optional.empty(),
+            PERIOD,
+            7,
+            Optional.empty(),
+            true,
+            Optional.empty(),
+            out,
+            RunSettings.MetaPlace.REMOTE,
+            warmup);
+    ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+    Summary summary;
+    try (PrintStream print = new PrintStream(bytes, true, StandardCharsets.UTF_8)) {
+      summary = SimRun.run(example, settings, print, false, new AtomicLong()::get);
+    }
+    return new Run(summary, bytes.toString(StandardCharsets.UTF_8));
+  }
+
+  @Test
+  void aWarmUpRunsTheSameRobotsFirstInVirtualTimeWithTheirMetaHereAndLeavesNoTraceOfIt()
+      throws IOException {
+    List<RunSettings> starts = new java.util.ArrayList<>();
+    SimExample recorded =
+        startedBy(
+            (sim, settings, journal) -> {
+              starts.add(settings);
+              return example.start(sim, settings, journal);
+            });
+    Path plain = dir.resolve("plain");
+    Path warmed = dir.resolve("warmed");
+    paced(recorded, 6, plain, Duration.ZERO);
+    starts.clear();
+
+    Run run = paced(recorded, 6, warmed, Duration.ofMillis(30));
+
+    assertThat(starts).hasSize(2);
+    RunSettings warmUp = starts.get(0);
+    assertThat(warmUp.realTime()).isFalse();
+    assertThat(warmUp.meta()).isEqualTo(RunSettings.MetaPlace.LOCAL);
+    assertThat(warmUp.cycles()).hasValue(3);
+    assertThat(warmUp.seed()).isEqualTo(7);
+    assertThat(warmUp.warmup()).isZero();
+    assertThat(warmUp.out()).doesNotExist();
+    RunSettings real = starts.get(1);
+    assertThat(real.realTime()).isTrue();
+    assertThat(real.meta()).isEqualTo(RunSettings.MetaPlace.REMOTE);
+    assertThat(real.cycles()).hasValue(6);
+    assertThat(files(warmed).keySet()).isEqualTo(files(plain).keySet());
+    assertThat(Files.readString(warmed.resolve(SimRun.TRACE), StandardCharsets.UTF_8))
+        .isEqualTo(Files.readString(plain.resolve(SimRun.TRACE), StandardCharsets.UTF_8));
+    assertThat(run.out()).contains("warmed up: 0.03 s simulated in ");
+    assertThat(run.entries())
+        .containsEntry("warm-up", "0.03 s simulated before the run, in virtual time, thrown away");
+  }
+
+  @Test
+  void aWarmUpRunsItsLengthRoundedUpToAWholeCycle() {
+    assertThat(SimRun.warmUpCycles(Duration.ofMillis(30), PERIOD)).isEqualTo(3);
+    assertThat(SimRun.warmUpCycles(Duration.ofMillis(25), PERIOD)).isEqualTo(3);
+    assertThat(SimRun.warmUpCycles(Duration.ofNanos(1), PERIOD)).isEqualTo(1);
+    assertThat(SimRun.warmUpCycles(Duration.ZERO, PERIOD)).isZero();
+  }
+
+  @Test
+  void aWarmUpOfRobotsInJvmsOfTheirOwnIsRefusedNamingTheExampleAndTheOption() {
+    Path out = dir.resolve("not-made");
+
+    assertThatThrownBy(
+            () -> paced(new ScriptedExample("spread", true), 3, out, Duration.ofSeconds(1)))
+        .isInstanceOf(IllegalArgumentException.class)
+        .hasMessageContaining("'spread'")
+        .hasMessageContaining("--warmup-seconds");
+    assertThat(out).doesNotExist();
+  }
+
+  @Test
+  void aWarmUpIsRefusedInVirtualTimeAndWhenNegative() {
+    RunSettings virtual = cycles(3);
+
+    assertThatThrownBy(() -> virtual.withWarmup(Duration.ofSeconds(1)))
+        .isInstanceOf(IllegalArgumentException.class)
+        .hasMessageContaining("--warmup-seconds applies to a run paced to real time")
+        .hasMessageContaining("PT1S");
+    assertThatThrownBy(() -> virtual.pacedToRealTime().withWarmup(Duration.ofSeconds(-1)))
+        .isInstanceOf(IllegalArgumentException.class)
+        .hasMessageContaining("--warmup-seconds must not be negative")
+        .hasMessageContaining("PT-1S");
+  }
+
   @Test
   void cyclesComeFromTheCyclesTheSecondsOrTheDefaultDurationRoundedUp() {
     assertThat(SimRun.cycles(example, cycles(7))).isEqualTo(7);
