@@ -14,10 +14,11 @@ import org.jspecify.annotations.Nullable;
  * A slot holds a signal for the cycle whose number is its stamp, so nothing is cleared between
  * cycles.
  *
- * <p>Threading: the robot's thread only. It is the {@link Inputs} and {@link Outputs} of the module
- * running, whose step it holds in {@link #current}.
+ * <p>Threading: the robot's thread only. Each module's {@link Step} is its {@link Inputs} and
+ * {@link Outputs}: handing a module its own step, rather than noting which module runs in a field
+ * the plan's reads and emissions look up, spares a cycle a reference store per module.
  */
-final class Plan implements Inputs, Outputs {
+final class Plan {
 
   /** Told of a module's failure. */
   interface Failures {
@@ -34,15 +35,10 @@ final class Plan implements Inputs, Outputs {
   private static final int REACTOR = 1;
   private static final int ACTUATOR = 2;
 
-  /** The step outside any module's: every port is unknown there. */
-  private static final Step NONE = new Step(null, new Port<?>[0], new Port<?>[0]);
-
   private final Step[] steps;
   private final PortRef[] slotRefs;
   private final @Nullable Signal[] values;
   private final long[] stamps;
-
-  private Step current;
 
   private long cycle;
   private long now;
@@ -106,7 +102,6 @@ final class Plan implements Inputs, Outputs {
         }
       }
     }
-    current = NONE;
   }
 
   /** Runs every module once, in order, as cycle {@code cycle} at time {@code now}. */
@@ -114,14 +109,13 @@ final class Plan implements Inputs, Outputs {
     this.cycle = cycle;
     this.now = now;
     for (Step step : steps) {
-      current = step;
       BehaviorModule module = step.module;
       try {
         // An int switch with casts: cheaper per step than a pattern switch over the kinds.
         switch (step.kind) {
-          case PERCEPTOR -> ((Perceptor) module).perceive(body, this);
-          case REACTOR -> ((Reactor) module).react(this, this);
-          default -> ((Actuator) module).act(this, body);
+          case PERCEPTOR -> ((Perceptor) module).perceive(body, step);
+          case REACTOR -> ((Reactor) module).react(step, step);
+          default -> ((Actuator) module).act(step, body);
         }
       } catch (Exception e) {
         for (int slot : step.outSlots) {
@@ -133,7 +127,6 @@ final class Plan implements Inputs, Outputs {
         connectors(step, cycle, now);
       }
     }
-    current = NONE;
   }
 
   /** After {@code step}'s module ran: the connectors it is the source or the target of. */
@@ -167,59 +160,10 @@ final class Plan implements Inputs, Outputs {
   /** Replaces the module of the same name; the caller checked its kind and ports. */
   void replace(BehaviorModule replacement) {
     for (Step step : steps) {
-      if (step.module != null && step.module.name().equals(replacement.name())) {
+      if (step.module.name().equals(replacement.name())) {
         step.module = replacement;
       }
     }
-  }
-
-  @Override
-  @SuppressWarnings("unchecked") // the wiring was type-checked against the ports' types
-  public <S extends Signal> @Nullable S get(Port<S> port) {
-    Step step = current;
-    int slot;
-    int j;
-    if (port == step.in0) {
-      j = 0; // the first input, as most modules have one: no search
-      slot = step.slot0;
-    } else {
-      j = step.input(port);
-      slot = step.inSlots[j];
-    }
-    if (slot == UNFED) {
-      return null; // nothing feeds it: nothing to read, whatever gates it
-    }
-    if (step.gated) {
-      Gate[] gates = step.inGates[j];
-      if (gates != null) {
-        for (Gate gate : gates) {
-          if (gate.state.holds(now, gate.holdNanos)) {
-            return null;
-          }
-        }
-      }
-    }
-    return stamps[slot] != cycle ? null : (S) values[slot];
-  }
-
-  @Override
-  public <S extends Signal> void emit(Port<S> port, S signal) {
-    Step step = current;
-    int j = port == step.out0 ? 0 : step.output(port);
-    if (!port.type().isInstance(signal)) {
-      throw new IllegalArgumentException(
-          "output "
-              + port
-              + " of module '"
-              + step.name()
-              + "' takes "
-              + port.type().getName()
-              + ", got "
-              + (signal == null ? "null" : signal.getClass().getName()));
-    }
-    int slot = step.outSlots[j];
-    values[slot] = signal;
-    stamps[slot] = cycle;
   }
 
   private static <T> T[] append(T[] array, T element) {
@@ -228,9 +172,12 @@ final class Plan implements Inputs, Outputs {
     return longer;
   }
 
-  /** One module's place in the plan: its ports, their slots, the connectors around it. */
-  private static final class Step {
-    @Nullable BehaviorModule module;
+  /**
+   * One module's place in the plan: its ports, their slots, the connectors around it; the module's
+   * {@link Inputs} and {@link Outputs} while it runs.
+   */
+  private final class Step implements Inputs, Outputs {
+    BehaviorModule module;
     final int kind;
     final Port<?>[] inPorts;
     final int[] inSlots;
@@ -246,20 +193,21 @@ final class Plan implements Inputs, Outputs {
     /** Whether an inhibitor gates one of this module's inputs. */
     boolean gated;
 
-    /** The first input port and its slot, the first output port (null if none). */
+    /** The first two input ports and their slots, the first output port (null if none). */
     final @Nullable Port<?> in0;
 
+    final @Nullable Port<?> in1;
     int slot0 = UNFED;
+    int slot1 = UNFED;
     final @Nullable Port<?> out0;
 
-    Step(@Nullable BehaviorModule module, Port<?>[] inPorts, Port<?>[] outPorts) {
+    Step(BehaviorModule module, Port<?>[] inPorts, Port<?>[] outPorts) {
       this.module = module;
       this.kind =
           switch (module) {
             case Perceptor p -> PERCEPTOR;
             case Reactor r -> REACTOR;
             case Actuator a -> ACTUATOR;
-            case null -> -1;
           };
       this.inPorts = inPorts;
       this.inSlots = new int[inPorts.length];
@@ -268,11 +216,62 @@ final class Plan implements Inputs, Outputs {
       this.outPorts = outPorts;
       this.outSlots = new int[outPorts.length];
       this.in0 = inPorts.length > 0 ? inPorts[0] : null;
+      this.in1 = inPorts.length > 1 ? inPorts[1] : null;
       this.out0 = outPorts.length > 0 ? outPorts[0] : null;
     }
 
     String name() {
-      return module == null ? "(none)" : module.name();
+      return module.name();
+    }
+
+    @Override
+    @SuppressWarnings("unchecked") // the wiring was type-checked against the ports' types
+    public <S extends Signal> @Nullable S get(Port<S> port) {
+      int slot;
+      int j;
+      if (port == in0) {
+        j = 0; // the first two inputs, as most modules have at most two: no search
+        slot = slot0;
+      } else if (port == in1) {
+        j = 1;
+        slot = slot1;
+      } else {
+        j = input(port);
+        slot = inSlots[j];
+      }
+      if (slot == UNFED) {
+        return null; // nothing feeds it: nothing to read, whatever gates it
+      }
+      if (gated) {
+        Gate[] gates = inGates[j];
+        if (gates != null) {
+          for (Gate gate : gates) {
+            if (gate.state.holds(now, gate.holdNanos)) {
+              return null;
+            }
+          }
+        }
+      }
+      return stamps[slot] != cycle ? null : (S) values[slot];
+    }
+
+    @Override
+    public <S extends Signal> void emit(Port<S> port, S signal) {
+      int j = port == out0 ? 0 : output(port);
+      if (!port.type().isInstance(signal)) {
+        throw new IllegalArgumentException(
+            "output "
+                + port
+                + " of module '"
+                + name()
+                + "' takes "
+                + port.type().getName()
+                + ", got "
+                + (signal == null ? "null" : signal.getClass().getName()));
+      }
+      int slot = outSlots[j];
+      values[slot] = signal;
+      stamps[slot] = cycle;
     }
 
     void feed(Port<?> port, int slot) {
@@ -280,6 +279,8 @@ final class Plan implements Inputs, Outputs {
       inSlots[j] = slot;
       if (j == 0) {
         slot0 = slot;
+      } else if (j == 1) {
+        slot1 = slot;
       }
     }
 
