@@ -2,6 +2,8 @@ package org.armgals.maam.sim;
 
 import java.util.List;
 import org.armgals.maam.spi.Leg;
+import org.ode4j.math.DQuaternion;
+import org.ode4j.math.DVector3;
 
 /**
  * What one atom senses, read at the start of a control cycle. A failed atom senses nothing: its
@@ -35,5 +37,30 @@ public record AtomSensors(
   /** What {@code leg} senses. */
   public LegSensors leg(Leg leg) {
     return legs.get(leg.ordinal());
+  }
+
+  /**
+   * Where {@code leg}'s tip is, as these readings place it (m): the leg pivots on the kernel's
+   * surface along its rest axis, is turned by its angles as the simulator's joint turns it (by
+   * minus {@link LegSensors#angle1()} about its first axis, fixed on the kernel, then by minus
+   * {@link LegSensors#angle2()} about its second, fixed on the leg), then by the kernel's {@link
+   * #orientation()}; {@code params} gives the kernel's radius and the leg's length. It is where the
+   * simulator has the tip, on either leg model (up to a jointed leg's give in its joint), and where
+   * the leg's proximity ray starts: what a picture of the atom draws.
+   */
+  public Vec3 tip(Leg leg, AtomParams params) {
+    LegSensors sensed = leg(leg);
+    DQuaternion turn = Frames.legTurn(leg, sensed.angle1(), sensed.angle2());
+    DVector3 d = Frames.rotate(turn, 0, 0, 1);
+    double r = params.kernelRadius();
+    double l = params.legLength();
+    DVector3 local =
+        Frames.rotate(
+            Frames.of(orientation),
+            leg.x() * r + d.get0() * l,
+            leg.y() * r + d.get1() * l,
+            leg.z() * r + d.get2() * l);
+    return new Vec3(
+        position.x() + local.get0(), position.y() + local.get1(), position.z() + local.get2());
   }
 }

@@ -60,6 +60,16 @@ final class Frames {
     };
   }
 
+  /**
+   * A leg's rotation in its kernel's frame at angles {@code (a1, a2)}: the joint turns it by {@code
+   * -a1} about axis 1 (fixed on the kernel), then by {@code -a2} about axis 2 (fixed on the leg),
+   * from its rest pose along its axis: the engine's universal joint's convention, which the jointed
+   * model reads.
+   */
+  static DQuaternion legTurn(Leg leg, double a1, double a2) {
+    return multiply(multiply(about(axis1(leg), -a1), about(axis2(leg), -a2)), zOnto(leg));
+  }
+
   /** The first tilt axis of {@code leg}, in the atom's frame. */
   static double[] axis1(Leg leg) {
     return switch (leg) {
