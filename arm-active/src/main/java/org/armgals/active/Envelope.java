@@ -9,7 +9,7 @@ import org.jspecify.annotations.Nullable;
  *
  * <p>Its link ({@link Link}) is written by producers and read by the consumer; the other fields are
  * written before the envelope is published by the enqueue and read only by the receiving object. It
- * is kept small (32 bytes for a one-way request): the sender allocates one per event and the
+ * is kept small (24 bytes for a one-way request): the sender allocates one per event and the
  * receiving core reads it from the sender's cache, so every line it spans costs both sides
  * (decision 0059). Hence no send counter (one sender's events reach a buffer in the order it sent
  * them, and a synchronous instant's sort is stable) and no link of its own for the deferred list.
@@ -44,8 +44,13 @@ abstract class Envelope extends Link implements Event {
     return null;
   }
 
-  /** Whether it may be processed now by {@code servant}. Called on the receiver's thread. */
-  abstract boolean processable(Object servant);
+  /**
+   * Whether it may be processed now by {@code servant}; by default always (no guard). Called on the
+   * receiver's thread.
+   */
+  boolean processable(Object servant) {
+    return true;
+  }
 
   /** Processes it on the receiver's thread; a thrown exception is a failure of this event. */
   abstract void process(Core<?> receiver) throws Exception;

@@ -89,7 +89,7 @@ final class Requests {
   }
 
   /** A one-way request from {@link ActiveRef#send(ServantAction)}: no guard, always processable. */
-  static final class Action<S> extends Envelope {
+  static sealed class Action<S> extends Envelope permits GuardedAction {
     private @Nullable ServantAction<? super S> action;
 
     Action(ServantAction<? super S> action) {
@@ -97,13 +97,8 @@ final class Requests {
     }
 
     @Override
-    boolean processable(Object servant) {
-      return true;
-    }
-
-    @Override
     @SuppressWarnings("unchecked")
-    void process(Core<?> receiver) throws Exception {
+    final void process(Core<?> receiver) throws Exception {
       ServantAction<? super S> a = action;
       if (a != null) {
         a.run((S) receiver.servant());
@@ -125,12 +120,11 @@ final class Requests {
    * A guarded one-way request from {@link ActiveRef#sendWhen}; a class of its own so that the
    * unguarded one, by far the most sent, carries no guard field.
    */
-  static final class GuardedAction<S> extends Envelope {
-    private @Nullable ServantAction<? super S> action;
+  static final class GuardedAction<S> extends Action<S> {
     private @Nullable Guard<? super S> guard;
 
     GuardedAction(ServantAction<? super S> action, Guard<? super S> guard) {
-      this.action = action;
+      super(action);
       this.guard = guard;
     }
 
@@ -140,17 +134,8 @@ final class Requests {
     }
 
     @Override
-    @SuppressWarnings("unchecked")
-    void process(Core<?> receiver) throws Exception {
-      ServantAction<? super S> a = action;
-      if (a != null) {
-        a.run((S) receiver.servant());
-      }
-    }
-
-    @Override
     void clear() {
-      action = null;
+      super.clear();
       guard = null;
     }
 
@@ -313,11 +298,6 @@ final class Requests {
       this.value = value;
       this.failure = failure;
       this.neverRan = neverRan;
-    }
-
-    @Override
-    boolean processable(Object servant) {
-      return true;
     }
 
     @Override
