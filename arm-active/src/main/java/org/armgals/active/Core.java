@@ -507,9 +507,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
         runtime.dispatcher().requeue(this); // fairness: the back of the shared queue
       } else {
         roomMade();
-        if ((state & STOPPED) == 0) {
-          restub(); // a stopped object is garbage soon: no need to let go of its last envelope
-        }
+        restub();
         STATE.getAndBitwiseAnd(this, ~SCHEDULED);
       }
       // The instant ends only once the object can be released again.
