@@ -4,8 +4,10 @@ import static java.util.Objects.requireNonNull;
 
 import java.lang.invoke.MethodHandles;
 import java.lang.invoke.VarHandle;
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.Iterator;
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CountDownLatch;
@@ -77,7 +79,10 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
     /** Counted down when the object can be released again. */
     @Nullable CountDownLatch done;
 
-    /** Written by this object's own thread only: numbers what it sends. */
+    /**
+     * Written by this object's own thread only: numbers what it sends, so that a reply names the
+     * request it answers.
+     */
     long sendSeq;
   }
 
@@ -101,10 +106,8 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
 
     // consumer only
 
-    /** The events found not processable, oldest first. */
-    @Nullable Envelope deferredHead;
-
-    @Nullable Envelope deferredTail;
+    /** The events found not processable, oldest first; null until the first. */
+    @Nullable ArrayDeque<Envelope> deferred;
 
     /** Whether an event was processed since the deferred events were last tried. */
     boolean dirty;
@@ -127,7 +130,9 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       this.rare = new Rare(sync ? new Instant() : null, dropOldest ? new LockedBuffer() : null);
     }
     this.head = this;
-    this.tail = this;
+    // A plain write: the object is published safely (by the object table's release store), and a
+    // volatile one would cost a fence per object created.
+    TAIL.set(this, this);
   }
 
   /** This object's rare fields, made on first need. Any thread. */
@@ -231,12 +236,14 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
 
   @Override
   public void send(ServantAction<? super S> action) {
-    post(new Requests.Action<S>(requireNonNull(action, "action"), null));
+    post(new Requests.Action<S>(requireNonNull(action, "action")));
   }
 
   @Override
   public void sendWhen(Guard<? super S> guard, ServantAction<? super S> action) {
-    post(new Requests.Action<S>(requireNonNull(action, "action"), requireNonNull(guard, "guard")));
+    post(
+        new Requests.GuardedAction<S>(
+            requireNonNull(action, "action"), requireNonNull(guard, "guard")));
   }
 
   @Override
@@ -333,16 +340,13 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   /** Routes an envelope from the calling thread's object (if any) to this object. */
   void post(Envelope e) {
     Core<?> sender = Carrier.running();
-    Address from = null;
-    long seq = 0;
     if (sender != null) {
-      from = sender.address();
       Instant i = sender.instant();
       if (i != null) {
-        seq = ++i.sendSeq;
+        ++i.sendSeq;
       }
     }
-    if (!e.bind(from, this, seq)) {
+    if (!e.bind(sender, this)) {
       throw new IllegalArgumentException("this request was already sent once: " + e);
     }
     enqueue(e);
@@ -425,9 +429,9 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
     runtime.countDropped();
     e.abandon(new BufferFullException(address(), config.capacity(), "event dropped: " + e));
     try {
-      config.listener().onDropped(address(), e.event(), config.overflow());
+      config.listener().onDropped(address(), e.event(this), config.overflow());
     } catch (RuntimeException t) {
-      runtime.reportFailure(this, e.event(), t);
+      runtime.reportFailure(this, e.event(this), t);
     }
   }
 
@@ -523,9 +527,14 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
    * @return the spins left, or -1 to go idle
    */
   private int lingerForEvents(Carrier carrier, int spins) {
+    Dispatcher dispatcher = runtime.dispatcher();
+    if (!dispatcher.nothingWaiting(carrier)) {
+      // Another object waits for this worker (as with many busy objects, each mostly idle): go
+      // idle at once, without counting as a spinner for a moment, a shared write and its undoing.
+      return -1;
+    }
     returnTaken(carrier); // while it lingers, the object's count of queued events is exact
     LockedBuffer lb = locked();
-    Dispatcher dispatcher = runtime.dispatcher();
     // The lingering worker watches the run queue too (nothingWaiting), so it counts as a spinning
     // worker: a sender that schedules another object meanwhile wakes no parked worker for it.
     dispatcher.lingerBegins(carrier);
@@ -632,7 +641,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
     } catch (Throwable t) {
       ActiveRuntimeErrors.throwIfFatal(t);
       e.failed(t);
-      runtime.reportFailure(this, e.event(), t);
+      runtime.reportFailure(this, e.event(this), t);
     } finally {
       Rare r = rare;
       if (r != null) {
@@ -652,12 +661,13 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
         r.dirty = false;
         return e;
       }
-      if (r.deferredHead != null && r.dirty) {
+      ArrayDeque<Envelope> deferred = r.deferred;
+      if (deferred != null && !deferred.isEmpty() && r.dirty) {
         r.dirty = false;
-        Envelope prev = null;
-        for (Envelope d = r.deferredHead; d != null; prev = d, d = d.deferredNext) {
+        for (Iterator<Envelope> it = deferred.iterator(); it.hasNext(); ) {
+          Envelope d = it.next();
           if (processableSafely(d)) {
-            unlinkDeferred(r, prev, d);
+            it.remove(); // the oldest first: mostly the deque's first, removed in constant time
             return d;
           }
         }
@@ -719,27 +729,12 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
 
   private void appendDeferred(Envelope e) {
     Rare r = rare();
-    e.deferredNext = null;
-    Envelope t = r.deferredTail;
-    if (t == null) {
-      r.deferredHead = e;
-    } else {
-      t.deferredNext = e;
+    ArrayDeque<Envelope> deferred = r.deferred;
+    if (deferred == null) {
+      deferred = new ArrayDeque<>();
+      r.deferred = deferred;
     }
-    r.deferredTail = e;
-  }
-
-  private static void unlinkDeferred(Rare r, @Nullable Envelope prev, Envelope d) {
-    Envelope next = d.deferredNext;
-    if (prev == null) {
-      r.deferredHead = next;
-    } else {
-      prev.deferredNext = next;
-    }
-    if (r.deferredTail == d) {
-      r.deferredTail = prev;
-    }
-    d.deferredNext = null;
+    deferred.addLast(e);
   }
 
   /** Stopped: discard everything queued, failing the futures. */
@@ -768,14 +763,11 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   /** Moves the deferred events, oldest first, into {@code into}; the deferred list is empty. */
   private void takeDeferred(List<Envelope> into) {
     Rare r = rare;
-    if (r == null) {
-      return;
+    ArrayDeque<Envelope> deferred = r == null ? null : r.deferred;
+    if (deferred != null) {
+      into.addAll(deferred);
+      deferred.clear();
     }
-    for (Envelope d = r.deferredHead; d != null; d = d.deferredNext) {
-      into.add(d);
-    }
-    r.deferredHead = null;
-    r.deferredTail = null;
   }
 
   // ---------------------------------------------------------------- blocked senders
@@ -862,10 +854,13 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
     }
   }
 
+  /**
+   * By sender address: the senders are objects of this runtime, so by their numbers, and events
+   * from outside any object (0) first. The sort is stable, and one sender's events reach the buffer
+   * (and the deferred list) in the order it sent them, so each sender's events stay in send order.
+   */
   private static final Comparator<Envelope> INSTANT_ORDER =
-      Comparator.comparing((Envelope e) -> e.from == null ? "" : e.from.runtime())
-          .thenComparingLong(e -> e.from == null ? 0 : e.from.id())
-          .thenComparingLong(e -> e.seq);
+      Comparator.comparingLong((Envelope e) -> e.from == null ? 0 : e.from.id);
 
   /** Retries skipped events oldest first, restarting after each one processed. */
   private int retrySkipped(Carrier carrier, List<Envelope> skipped) {

@@ -3,7 +3,6 @@ package org.armgals.active;
 import java.lang.invoke.MethodHandles;
 import java.lang.invoke.VarHandle;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.concurrent.atomic.LongAdder;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Consumer;
 import org.jspecify.annotations.Nullable;
@@ -16,10 +15,10 @@ import org.jspecify.annotations.Nullable;
  *
  * <p>Numbering, insertion, removal and lookups are lock-free: a number is one atomic increment, a
  * slot is set by a release store and cleared by a compare-and-set, and each chunk counts its
- * removals. Only making a chunk, growing the array of chunks and freeing a chunk take a lock, once
- * per {@link #CHUNK} objects (an object created and stopped per message, as in a creation workload,
- * made the lock per object contended: the creator and the stopping objects run on different
- * workers).
+ * removals; the count of live objects is computed from those, not kept. Only making a chunk,
+ * growing the array of chunks and freeing a chunk take a lock, once per {@link #CHUNK} objects (an
+ * object created and stopped per message, as in a creation workload, made the lock per object
+ * contended: the creator and the stopping objects run on different workers).
  */
 final class ObjectTable {
   static final int CHUNK = 1024;
@@ -34,10 +33,19 @@ final class ObjectTable {
     }
   }
 
-  /** {@link #CHUNK} slots and how many of their objects have been removed. */
-  private static final class Chunk {
+  /** A chunk's slots, read on every addition and removal. */
+  private abstract static class Slots {
     final @Nullable Core<?>[] slots = new Core<?>[CHUNK];
 
+    // Keeps the removals' counter (a subclass's field, laid out after these) off the line of the
+    // slots' reference: the creator reads that on every addition while objects that stop, on
+    // other workers, count their removals. One chunk holds 1024 objects, so this costs nothing.
+    @SuppressWarnings("unused")
+    private long p1, p2, p3, p4, p5, p6, p7;
+  }
+
+  /** {@link #CHUNK} slots and how many of their objects have been removed. */
+  private static final class Chunk extends Slots {
     @SuppressWarnings("unused") // accessed through GONE
     volatile int gone;
   }
@@ -45,7 +53,9 @@ final class ObjectTable {
   private final ReentrantLock lock = new ReentrantLock();
   private volatile @Nullable Chunk[] chunks = new Chunk[0];
   private final AtomicLong lastId = new AtomicLong();
-  private final LongAdder count = new LongAdder();
+
+  /** Chunks freed so far, each once all of its numbers were gone; written under the lock. */
+  private long freedChunks;
 
   /** Numbers a new object and stores the one {@code make} builds with that number. */
   <S> Core<S> add(java.util.function.LongFunction<Core<S>> make) {
@@ -58,7 +68,6 @@ final class ObjectTable {
       throw e;
     }
     SLOT.setRelease(chunkFor(id).slots, slotOf(id), core);
-    count.increment();
     return core;
   }
 
@@ -68,7 +77,6 @@ final class ObjectTable {
     if (chunk == null || !SLOT.compareAndSet(chunk.slots, slotOf(core.id), core, (Core<?>) null)) {
       return;
     }
-    count.decrement();
     gone(core.id);
   }
 
@@ -87,6 +95,7 @@ final class ObjectTable {
         if (cs[c] == chunk) {
           cs[c] = null;
           chunks = cs; // publish
+          freedChunks++;
         }
       } finally {
         lock.unlock();
@@ -103,8 +112,25 @@ final class ObjectTable {
     return chunk == null ? null : (Core<?>) SLOT.getAcquire(chunk.slots, slotOf(id));
   }
 
+  /**
+   * The live objects: the numbers handed out less those gone. Computed, not counted, so that adding
+   * and removing an object write no shared counter (the creator and the objects that stop run on
+   * different workers). The lock keeps the freed chunks and the array of chunks in step; an object
+   * being added or removed meanwhile may be counted or not.
+   */
   long size() {
-    return count.sum();
+    lock.lock();
+    try {
+      long gone = freedChunks * CHUNK;
+      for (Chunk chunk : chunks) {
+        if (chunk != null) {
+          gone += (int) GONE.getVolatile(chunk);
+        }
+      }
+      return Math.max(0, lastId.get() - gone);
+    } finally {
+      lock.unlock();
+    }
   }
 
   /** Visits the live objects (a weakly consistent view). */

@@ -88,24 +88,17 @@ final class Requests {
     return guard == null || guard.test((S) servant);
   }
 
-  /** A one-way request from {@link ActiveRef#send(ServantAction)}. */
-  static final class Action<S> extends Envelope {
+  /** A one-way request from {@link ActiveRef#send(ServantAction)}: no guard, always processable. */
+  static sealed class Action<S> extends Envelope permits GuardedAction {
     private @Nullable ServantAction<? super S> action;
-    private @Nullable Guard<? super S> guard;
 
-    Action(ServantAction<? super S> action, @Nullable Guard<? super S> guard) {
+    Action(ServantAction<? super S> action) {
       this.action = action;
-      this.guard = guard;
-    }
-
-    @Override
-    boolean processable(Object servant) {
-      return holds(guard, servant);
     }
 
     @Override
     @SuppressWarnings("unchecked")
-    void process(Core<?> receiver) throws Exception {
+    final void process(Core<?> receiver) throws Exception {
       ServantAction<? super S> a = action;
       if (a != null) {
         a.run((S) receiver.servant());
@@ -115,12 +108,40 @@ final class Requests {
     @Override
     void clear() {
       action = null;
+    }
+
+    @Override
+    public String toString() {
+      return "OneWayRequest[from " + sender() + "]";
+    }
+  }
+
+  /**
+   * A guarded one-way request from {@link ActiveRef#sendWhen}; a class of its own so that the
+   * unguarded one, by far the most sent, carries no guard field.
+   */
+  static final class GuardedAction<S> extends Action<S> {
+    private @Nullable Guard<? super S> guard;
+
+    GuardedAction(ServantAction<? super S> action, Guard<? super S> guard) {
+      super(action);
+      this.guard = guard;
+    }
+
+    @Override
+    boolean processable(Object servant) {
+      return holds(guard, servant);
+    }
+
+    @Override
+    void clear() {
+      super.clear();
       guard = null;
     }
 
     @Override
     public String toString() {
-      return "OneWayRequest[" + from + " -> " + (to == null ? "?" : to.address()) + "]";
+      return "OneWayRequest[from " + sender() + ", guarded]";
     }
   }
 
@@ -180,7 +201,7 @@ final class Requests {
 
     @Override
     public String toString() {
-      return "SynchronizedRequest[" + from + " -> " + (to == null ? "?" : to.address()) + "]";
+      return "SynchronizedRequest[from " + sender() + "]";
     }
   }
 
@@ -242,7 +263,11 @@ final class Requests {
     }
 
     @Override
-    Event event() {
+    Event event(Core<?> receiver) {
+      return event();
+    }
+
+    private Event event() {
       Event ev = event;
       if (ev == null) {
         throw new IllegalStateException("a processed event is not kept");
@@ -276,15 +301,10 @@ final class Requests {
     }
 
     @Override
-    boolean processable(Object servant) {
-      return true;
-    }
-
-    @Override
     void process(Core<?> receiver) throws Exception {
       future.arrive(value, failure, neverRan);
       if (receiver.servant() instanceof EventProcessor p) {
-        p.process(event());
+        p.process(event(receiver));
       }
     }
 
@@ -294,16 +314,14 @@ final class Requests {
     }
 
     @Override
-    Event event() {
-      Address sender = future.completer();
-      Core<?> owner = to;
+    Event event(Core<?> receiver) {
       return new FutureEvent(
-          sender, owner == null ? sender : owner.address(), future.requestId(), value, failure);
+          future.completer(), receiver.address(), future.requestId(), value, failure);
     }
 
     @Override
     public String toString() {
-      return event().toString();
+      return "FutureReply[request " + future.requestId() + " from " + future.completer() + "]";
     }
   }
 }

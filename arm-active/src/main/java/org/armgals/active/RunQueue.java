@@ -92,7 +92,7 @@ final class RunQueue {
     }
     if (next != null) {
       first = next;
-      return f;
+      return taken(f);
     }
     if (f != last) {
       return null; // a producer is between its exchange and its link: try again later
@@ -101,8 +101,18 @@ final class RunQueue {
     next = (Node) NEXT.getAcquire(f);
     if (next != null) {
       first = next;
-      return f;
+      return taken(f);
     }
     return null;
+  }
+
+  /**
+   * A node leaving the queue forgets its successor (no producer links to it any more: it is not the
+   * last node). Otherwise an idle object would keep every object polled after it reachable, a chain
+   * of stopped objects that the collector could not free while the first one lives.
+   */
+  private static Node taken(Node n) {
+    NEXT.setRelease(n, (Node) null);
+    return n;
   }
 }

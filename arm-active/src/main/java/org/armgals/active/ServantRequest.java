@@ -14,6 +14,23 @@ import org.jspecify.annotations.Nullable;
 abstract class ServantRequest<S> extends Envelope {
   private @Nullable S servant;
 
+  /** The object it was sent to; set once, when sent (a request object is sent at most once). */
+  private @Nullable Core<?> to;
+
+  @Override
+  final boolean claim(Core<?> receiver) {
+    if (to != null) {
+      return false;
+    }
+    to = receiver;
+    return true;
+  }
+
+  @Override
+  final @Nullable Core<?> receiver() {
+    return to;
+  }
+
   /** Binds the servant; see {@link Callable#setServant}. */
   public final void setServant(S servant) {
     this.servant = requireNonNull(servant, "servant");
