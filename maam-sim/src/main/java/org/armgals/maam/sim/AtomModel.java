@@ -34,8 +34,12 @@ final class AtomModel {
   final DBody kernel;
   final Map<Leg, LegModel> legs = new EnumMap<>(Leg.class);
 
-  /** The space of the atom's proximity rays: enabled only while the sensors are read. */
-  final DSpace rays;
+  /**
+   * The space of the atom's parts (kernel and leg capsules), in no other space: the simulation's
+   * broad phase pairs it with what its box overlaps, and its parts are never tested against each
+   * other.
+   */
+  final DSpace parts;
 
   /** The kernel's up axis at the start, in the kernel's frame: what tilt is measured from. */
   private final DVector3 upLocal;
@@ -73,9 +77,7 @@ final class AtomModel {
     kernel = OdeHelper.createBody(physics.world);
     kernel.setPosition(c.x(), c.y(), c.z());
     kernel.setQuaternion(q);
-    // The atom's own geometry in a space of its own: the world's space sees one thing per atom,
-    // and an atom's parts are never tested against each other.
-    DSpace parts = OdeHelper.createSimpleSpace(physics.space);
+    parts = OdeHelper.createSimpleSpace();
     parts.setData(new GeomTag(GeomTag.Kind.ATOM, this, null));
     DSphere sphere = OdeHelper.createSphere(parts, params.kernelRadius());
     sphere.setBody(kernel);
@@ -83,13 +85,9 @@ final class AtomModel {
     DMass mass = OdeHelper.createMass();
     mass.setSphereTotal(params.kernelMass(), params.kernelRadius());
     double cylinder = params.legLength() - 2 * params.legRadius();
-    // The proximity rays in a space of their own too, enabled only while the sensors are read.
-    rays = OdeHelper.createSimpleSpace(physics.space);
-    rays.setData(new GeomTag(GeomTag.Kind.RAYS, this, null));
-    rays.disable();
     for (Leg leg : Leg.values()) {
-      DRay ray = OdeHelper.createRay(rays, params.proximityRange());
-      ray.disable();
+      // A proximity ray, in no space: cast only while the sensors are read.
+      DRay ray = OdeHelper.createRay(null, params.proximityRange());
       DCapsule capsule = OdeHelper.createCapsule(parts, params.legRadius(), cylinder);
       LegModel model =
           switch (dynamics) {

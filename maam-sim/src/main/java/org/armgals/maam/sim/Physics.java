@@ -7,6 +7,7 @@ import org.jspecify.annotations.Nullable;
 import org.ode4j.math.DMatrix3;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
+import org.ode4j.ode.DAABBC;
 import org.ode4j.ode.DBody;
 import org.ode4j.ode.DBox;
 import org.ode4j.ode.DContact;
@@ -16,6 +17,7 @@ import org.ode4j.ode.DGeom;
 import org.ode4j.ode.DJoint.DJointFeedback;
 import org.ode4j.ode.DJointGroup;
 import org.ode4j.ode.DMisc;
+import org.ode4j.ode.DRay;
 import org.ode4j.ode.DRotation;
 import org.ode4j.ode.DSpace;
 import org.ode4j.ode.DWorld;
@@ -79,7 +81,17 @@ final class Physics {
   }
 
   final DWorld world;
-  final DSpace space;
+
+  /** The ground, the plane z = 0; like the obstacles, in no space (see {@link #collide()}). */
+  private final DGeom ground;
+
+  private final List<DGeom> obstacles = new ArrayList<>();
+
+  /** The atoms, in id order, and the spaces of their parts. */
+  private final List<AtomModel> atoms = new ArrayList<>();
+
+  private final List<DSpace> parts = new ArrayList<>();
+  private final AtomGrid grid = new AtomGrid();
   private final DJointGroup contacts = OdeHelper.createJointGroup();
   private final DContactBuffer buffer = new DContactBuffer(MAX_CONTACTS);
   private final double friction;
@@ -98,8 +110,8 @@ final class Physics {
     world.setQuickStepNumIterations(SOLVER_ITERATIONS);
     world.setContactMaxCorrectingVel(1.0);
     world.setContactSurfaceLayer(0.0005);
-    space = OdeHelper.createHashSpace();
-    OdeHelper.createPlane(space, 0, 0, 1, 0).setData(GeomTag.WORLD);
+    ground = OdeHelper.createPlane(null, 0, 0, 1, 0);
+    ground.setData(GeomTag.WORLD);
     for (Obstacle o : scene.obstacles()) {
       switch (o) {
         case Obstacle.Box b -> box(b.center(), b.size(), new DMatrix3().setIdentity());
@@ -109,10 +121,11 @@ final class Physics {
   }
 
   private void box(Vec3 center, Vec3 size, DMatrix3 rotation) {
-    DBox box = OdeHelper.createBox(space, size.x(), size.y(), size.z());
+    DBox box = OdeHelper.createBox(null, size.x(), size.y(), size.z());
     box.setPosition(center.x(), center.y(), center.z());
     box.setRotation(rotation);
     box.setData(GeomTag.WORLD);
+    obstacles.add(box);
   }
 
   /** A pipe of flat staves around its axis: each stave a thin box, tangent to the inner radius. */
@@ -143,19 +156,42 @@ final class Physics {
     }
   }
 
-  private boolean raysOnly;
+  /** Adds an atom, whose parts are in the space {@code atom.parts}; atoms are added in id order. */
+  void add(AtomModel atom) {
+    atoms.add(atom);
+    parts.add(atom.parts);
+  }
 
   /**
-   * Casts the enabled proximity rays against everything else, and nothing else: the sensing pass at
-   * the start of a control cycle.
+   * Casts the proximity rays of {@code legs} (aimed) against everything but their own atoms: the
+   * sensing pass at the start of a control cycle.
    */
-  void castRays() {
+  void castRays(List<LegModel> legs) {
     ENGINE.lock();
-    raysOnly = true;
     try {
-      space.collide(null, nearCallback);
+      cleanParts();
+      DAABBC groundBox = ground.getAABB();
+      for (LegModel leg : legs) {
+        DRay ray = leg.ray;
+        DAABBC box = ray.getAABB();
+        if (overlap(box, groundBox)) {
+          near(null, ray, ground);
+        }
+        for (DGeom obstacle : obstacles) {
+          if (overlap(box, obstacle.getAABB())) {
+            near(null, ray, obstacle);
+          }
+        }
+        AtomModel own = leg.atom;
+        grid.forEachOverlapping(
+            box,
+            a -> {
+              if (atoms.get(a) != own) {
+                near(null, ray, parts.get(a));
+              }
+            });
+      }
     } finally {
-      raysOnly = false;
       ENGINE.unlock();
     }
   }
@@ -165,7 +201,7 @@ final class Physics {
     ENGINE.lock();
     try {
       DMisc.dRandSetSeed(seed);
-      space.collide(null, nearCallback);
+      collide();
       world.quickStep(dt);
       seed = DMisc.dRandGetSeed();
     } finally {
@@ -175,20 +211,68 @@ final class Physics {
     contacts.empty();
   }
 
+  /**
+   * Brings the parts' bounding boxes up to date and files the atoms in the grid. Every atom's space
+   * is cleaned every time, as the engine's hash space did with its entries: the engine keeps a
+   * space's parts in the order they last moved in since it was cleaned, and contacts are made in
+   * that order.
+   */
+  private void cleanParts() {
+    for (DSpace s : parts) {
+      s.cleanGeoms();
+    }
+    grid.rebuild(parts);
+  }
+
+  /**
+   * Makes this step's contacts: between atoms whose boxes overlap (found with the {@link
+   * AtomGrid}), between atoms and obstacles, then between atoms and the ground. Each body's
+   * contacts are made in the order the engine's hash space made them (contacts with other atoms and
+   * obstacles first, then the ground's; each atom's parts in its space's order), except that pairs
+   * of atoms and of an atom and several obstacles come in an order of their own: the solver visits
+   * a body's contacts in the order they were made, so an atom that touches only the ground (and one
+   * obstacle) moves bit for bit as it did (decision 0062).
+   */
+  private void collide() {
+    cleanParts();
+    grid.forEachPair(pairNear);
+    for (DSpace s : parts) {
+      DAABBC box = s.getAABB();
+      for (DGeom obstacle : obstacles) {
+        if (overlap(box, obstacle.getAABB())) {
+          near(null, s, obstacle);
+        }
+      }
+    }
+    DAABBC groundBox = ground.getAABB();
+    for (DSpace s : parts) {
+      if (overlap(s.getAABB(), groundBox)) {
+        near(null, s, ground);
+      }
+    }
+  }
+
+  private final AtomGrid.PairVisitor pairNear = (a, b) -> near(null, parts.get(a), parts.get(b));
+
+  /** The engine's test: boxes that touch overlap. */
+  private static boolean overlap(DAABBC a, DAABBC b) {
+    return a.getMin0() <= b.getMax0()
+        && b.getMin0() <= a.getMax0()
+        && a.getMin1() <= b.getMax1()
+        && b.getMin1() <= a.getMax1()
+        && a.getMin2() <= b.getMax2()
+        && b.getMin2() <= a.getMax2();
+  }
+
   private final DGeom.DNearCallback nearCallback = this::near;
 
   private void near(Object data, DGeom o1, DGeom o2) {
     GeomTag t1 = (GeomTag) o1.getData();
     GeomTag t2 = (GeomTag) o2.getData();
-    boolean rays1 = t1.kind() == GeomTag.Kind.RAYS || t1.kind() == GeomTag.Kind.RAY;
-    boolean rays2 = t2.kind() == GeomTag.Kind.RAYS || t2.kind() == GeomTag.Kind.RAY;
-    if (space(t1) || space(t2)) {
-      // An atom's space (of parts or of rays) near something else: look inside, unless rays would
-      // meet rays, or only rays are cast and neither is one.
-      if (rays1 && rays2 || raysOnly && !rays1 && !rays2) {
-        return;
-      }
-      if (!raysOnly && still(t1) && still(t2)) {
+    boolean rays = t1.kind() == GeomTag.Kind.RAY || t2.kind() == GeomTag.Kind.RAY;
+    if (t1.kind() == GeomTag.Kind.ATOM || t2.kind() == GeomTag.Kind.ATOM) {
+      // An atom's space near something else: look inside.
+      if (!rays && still(t1) && still(t2)) {
         // Nothing moves: the contacts would be those of the last step, which the solver ignores
         // between resting bodies; the tips keep the contact state they had.
         return;
@@ -198,11 +282,8 @@ final class Physics {
       }
       return;
     }
-    if (t1.kind() == GeomTag.Kind.RAY || t2.kind() == GeomTag.Kind.RAY) {
+    if (rays) {
       ray(t1, o1, t2, o2);
-      return;
-    }
-    if (raysOnly) {
       return;
     }
     if (t1.atom() != null && t1.atom() == t2.atom()) {
@@ -356,10 +437,6 @@ final class Physics {
         sign * (rx * f.get1() - ry * f.get0()));
   }
 
-  private static boolean space(GeomTag tag) {
-    return tag.kind() == GeomTag.Kind.ATOM || tag.kind() == GeomTag.Kind.RAYS;
-  }
-
   /** A resting atom or the world, for collisions. */
   private static boolean still(GeomTag tag) {
     AtomModel atom = tag.atom();
@@ -398,7 +475,16 @@ final class Physics {
 
   void destroy() {
     contacts.destroy();
-    space.destroy();
+    for (AtomModel atom : atoms) {
+      atom.parts.destroy();
+      for (LegModel leg : atom.legs.values()) {
+        leg.ray.destroy();
+      }
+    }
+    for (DGeom obstacle : obstacles) {
+      obstacle.destroy();
+    }
+    ground.destroy();
     world.destroy();
   }
 }

@@ -31,6 +31,10 @@ final class SimulationImpl implements Simulation {
   private final int stepsPerCycle;
   private final double dt;
   private final List<SimEvent> events = new ArrayList<>();
+
+  /** The legs whose rays are cast in this cycle's sensing pass. */
+  private final List<LegModel> sensing = new ArrayList<>();
+
   private List<SimEvent> lastEvents = List.of();
   private long cycle;
   private long timeNanos;
@@ -50,6 +54,7 @@ final class SimulationImpl implements Simulation {
     for (Scene.Placement p : placements) {
       AtomModel atom = new AtomModel(physics, p, scene.params(), b.legDynamics);
       atoms.add(atom);
+      physics.add(atom);
       bodies.put(p.id(), new BodyView(this, atom, sense(atom)));
       Controller c = b.controllerById.get(p.id());
       controllers.put(p.id(), c != null ? c : b.controllers.apply(p.id()));
@@ -217,10 +222,8 @@ final class SimulationImpl implements Simulation {
   }
 
   private void senseAll() {
+    sensing.clear();
     for (AtomModel atom : atoms) {
-      if (!atom.failed) {
-        atom.rays.enable();
-      }
       for (LegModel leg : atom.legs.values()) {
         if (atom.failed || leg.failed) {
           continue;
@@ -229,16 +232,12 @@ final class SimulationImpl implements Simulation {
           leg.proximity = 0;
         } else {
           leg.aimRay();
-          leg.ray.enable();
+          sensing.add(leg);
         }
       }
     }
-    physics.castRays();
+    physics.castRays(sensing);
     for (AtomModel atom : atoms) {
-      atom.rays.disable();
-      for (LegModel leg : atom.legs.values()) {
-        leg.ray.disable();
-      }
       bodies.get(atom.id).sensors = sense(atom);
       for (LegModel leg : atom.legs.values()) {
         leg.contact = false;
