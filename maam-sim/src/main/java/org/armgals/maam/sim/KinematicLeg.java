@@ -105,7 +105,8 @@ final class KinematicLeg extends LegModel {
     double r1 = 0;
     double r2 = 0;
     if (w1 != 0 || w2 != 0) {
-      atom.cone.clamp(a1 + w1 * dt, a2 + w2 * dt, next);
+      atom.cone.clamp(
+          settle(on, a1 + w1 * dt, target[0]), settle(on, a2 + w2 * dt, target[1]), next);
       r1 = (next[0] - a1) / dt;
       r2 = (next[1] - a2) / dt;
       a1 = next[0];
@@ -139,6 +140,21 @@ final class KinematicLeg extends LegModel {
       }
     }
   }
+
+  /**
+   * An axis that comes within {@link #SETTLED} of its target is at it: the servo's error shrinks by
+   * a constant factor each step and would never reach zero, keeping the leg turning (and its atom
+   * awake) for ever.
+   */
+  private static double settle(boolean on, double angle, double target) {
+    return on && Math.abs(angle - target) <= SETTLED ? target : angle;
+  }
+
+  /**
+   * The servo's resolution (rad): a microradian, a thousandth of a real servo's, moves the tip by a
+   * tenth of a micrometre.
+   */
+  static final double SETTLED = 1e-6;
 
   /**
    * The speed an axis turns at (rad/s): the servo's, unless the load exceeds what the motor can

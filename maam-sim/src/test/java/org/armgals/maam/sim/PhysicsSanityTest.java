@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.time.Duration;
 import java.util.SplittableRandom;
 import org.armgals.maam.spi.Leg;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
@@ -26,6 +27,22 @@ class PhysicsSanityTest {
         assertThat(later.leg(leg).tipContact()).as("tip %s on the ground", leg).isTrue();
       }
       assertThat(later.leg(Leg.PZ).tipContact()).isFalse();
+    }
+  }
+
+  @Test
+  void aKinematicLegThatReachesItsTargetStopsThereAndItsAtomRests() {
+    try (Simulation s =
+        Simulation.builder(Scenes.builtIn("single"))
+            .legDynamics(LegDynamics.KINEMATIC)
+            .controller(1, (body, cycle) -> body.setLegTarget(Leg.MZ, 0.05, -0.02))
+            .build()) {
+      s.runFor(Duration.ofSeconds(3));
+      LegSensors leg = s.atom(1).sensors().leg(Leg.MZ);
+      assertThat(leg.angle1()).isEqualTo(0.05);
+      assertThat(leg.angle2()).isEqualTo(-0.02);
+      // A leg still creeping towards its target where it touches the ground would keep it awake.
+      assertThat(((BodyView) s.atom(1)).model.kernel.isEnabled()).isFalse();
     }
   }
 
