@@ -1,9 +1,6 @@
 package org.armgals.maam.sim;
 
 import java.util.Arrays;
-import java.util.List;
-import org.ode4j.ode.DAABBC;
-import org.ode4j.ode.DGeom;
 
 /**
  * The broad phase over atoms: a grid of square cells in the ground's plane (x, y), each as wide as
@@ -38,13 +35,14 @@ final class AtomGrid {
   private int mask;
 
   /**
-   * Files the atoms' bounding boxes, {@code geoms.get(i)}'s for atom i, brought up to date: call
-   * before the queries of a step.
+   * Files {@code count} atoms' bounding boxes, atom i's in {@code boxes[6i..6i+5]} as (min x, max
+   * x, min y, max y, min z, max z): call before the queries of a step. The array is read, not
+   * copied, until the next rebuild.
    */
-  void rebuild(List<? extends DGeom> geoms) {
-    count = geoms.size();
-    if (box.length < 6 * count) {
-      box = new double[6 * count];
+  void rebuild(double[] boxes, int count) {
+    this.count = count;
+    this.box = boxes;
+    if (cellX.length < count) {
       cellX = new int[count];
       cellY = new int[count];
       next = new int[count];
@@ -54,14 +52,7 @@ final class AtomGrid {
     }
     double widest = 0;
     for (int i = 0; i < count; i++) {
-      DAABBC b = geoms.get(i).getAABB();
       int o = 6 * i;
-      box[o] = b.getMin0();
-      box[o + 1] = b.getMax0();
-      box[o + 2] = b.getMin1();
-      box[o + 3] = b.getMax1();
-      box[o + 4] = b.getMin2();
-      box[o + 5] = b.getMax2();
       widest = Math.max(widest, Math.max(box[o + 1] - box[o], box[o + 3] - box[o + 2]));
     }
     // A box as wide as a cell spans at most two cells on an axis; a degenerate or broken box
@@ -98,12 +89,12 @@ final class AtomGrid {
     }
   }
 
-  /** Visits every atom whose box overlaps {@code query}. */
-  void forEachOverlapping(DAABBC query, AtomVisitor visitor) {
-    double minX = query.getMin0();
-    double maxX = query.getMax0();
-    double minY = query.getMin1();
-    double maxY = query.getMax1();
+  /** Visits every atom whose box overlaps {@code query}, a box as in {@link #rebuild}. */
+  void forEachOverlapping(double[] query, AtomVisitor visitor) {
+    double minX = query[0];
+    double maxX = query[1];
+    double minY = query[2];
+    double maxY = query[3];
     long x0 = cellOf(minX) - 1L;
     long x1 = cellOf(maxX);
     long y0 = cellOf(minY) - 1L;
@@ -140,23 +131,10 @@ final class AtomGrid {
   }
 
   private boolean overlap(int a, int b) {
-    int i = 6 * a;
-    int j = 6 * b;
-    return box[i] <= box[j + 1]
-        && box[j] <= box[i + 1]
-        && box[i + 2] <= box[j + 3]
-        && box[j + 2] <= box[i + 3]
-        && box[i + 4] <= box[j + 5]
-        && box[j + 4] <= box[i + 5];
+    return Boxes.overlap(box, 6 * a, box, 6 * b);
   }
 
-  private boolean overlaps(int a, DAABBC q) {
-    int i = 6 * a;
-    return box[i] <= q.getMax0()
-        && q.getMin0() <= box[i + 1]
-        && box[i + 2] <= q.getMax1()
-        && q.getMin1() <= box[i + 3]
-        && box[i + 4] <= q.getMax2()
-        && q.getMin2() <= box[i + 5];
+  private boolean overlaps(int a, double[] q) {
+    return Boxes.overlap(box, 6 * a, q, 0);
   }
 }

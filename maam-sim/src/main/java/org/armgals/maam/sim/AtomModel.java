@@ -35,11 +35,10 @@ final class AtomModel {
   final Map<Leg, LegModel> legs = new EnumMap<>(Leg.class);
 
   /**
-   * The space of the atom's parts (kernel and leg capsules), in no other space: the simulation's
-   * broad phase pairs it with what its box overlaps, and its parts are never tested against each
-   * other.
+   * The atom's kernel and leg capsules as the broad phase sees them; they are never tested against
+   * each other.
    */
-  final DSpace parts;
+  final Parts parts;
 
   /** The kernel's up axis at the start, in the kernel's frame: what tilt is measured from. */
   private final DVector3 upLocal;
@@ -52,6 +51,15 @@ final class AtomModel {
    * collisions with the world and other still atoms are skipped.
    */
   boolean still;
+
+  /** This step a contact joined the atom's body to another body, which may wake it. */
+  boolean touchedBody;
+
+  /**
+   * This step the atom's contacts with the ground and obstacles are left out, none of them counting
+   * (see {@link Physics}).
+   */
+  boolean restsOnTheGround;
 
   double energy;
   boolean failed;
@@ -77,9 +85,10 @@ final class AtomModel {
     kernel = OdeHelper.createBody(physics.world);
     kernel.setPosition(c.x(), c.y(), c.z());
     kernel.setQuaternion(q);
-    parts = OdeHelper.createSimpleSpace();
-    parts.setData(new GeomTag(GeomTag.Kind.ATOM, this, null));
-    DSphere sphere = OdeHelper.createSphere(parts, params.kernelRadius());
+    // Jointed legs' parts in a space of the engine's, which keeps their order; kinematic legs'
+    // parts in none (KinematicParts keeps it).
+    DSpace space = dynamics == LegDynamics.JOINTED ? OdeHelper.createSimpleSpace() : null;
+    DSphere sphere = OdeHelper.createSphere(space, params.kernelRadius());
     sphere.setBody(kernel);
     sphere.setData(new GeomTag(GeomTag.Kind.KERNEL, this, null));
     DMass mass = OdeHelper.createMass();
@@ -88,7 +97,7 @@ final class AtomModel {
     for (Leg leg : Leg.values()) {
       // A proximity ray, in no space: cast only while the sensors are read.
       DRay ray = OdeHelper.createRay(null, params.proximityRange());
-      DCapsule capsule = OdeHelper.createCapsule(parts, params.legRadius(), cylinder);
+      DCapsule capsule = OdeHelper.createCapsule(space, params.legRadius(), cylinder);
       LegModel model =
           switch (dynamics) {
             case JOINTED -> jointedLeg(physics, leg, q, c, capsule, ray);
@@ -103,6 +112,15 @@ final class AtomModel {
       capsule.setData(new GeomTag(GeomTag.Kind.LEG, this, model));
       ray.setData(new GeomTag(GeomTag.Kind.RAY, this, model));
       legs.put(leg, model);
+    }
+    if (space != null) {
+      parts = new SpaceParts(space, legs.size() + 1);
+    } else {
+      KinematicLeg[] kinematic = new KinematicLeg[legs.size()];
+      for (LegModel leg : legs.values()) {
+        kinematic[leg.leg.ordinal()] = (KinematicLeg) leg;
+      }
+      parts = new KinematicParts(kernel, sphere, kinematic, params.reach());
     }
     // The legs sit symmetrically, so the centre of mass is the kernel's centre up to rounding; the
     // engine wants it exactly there.
@@ -153,23 +171,25 @@ final class AtomModel {
     double[] a2 = Frames.axis2(leg);
     joint.setAxis1(Frames.rotate(q, a1[0], a1[1], a1[2]));
     joint.setAxis2(Frames.rotate(q, a2[0], a2[1], a2[2]));
-    return new JointedLeg(this, leg, body, joint, ray);
+    return new JointedLeg(this, leg, body, joint, capsule, ray);
   }
 
   /**
    * Before the step's collisions: decides whether the atom is {@link #still}; a still atom's tips
-   * keep touching what they touched, a moving atom's are found again.
+   * keep touching what they touched, a moving atom's are found again (those with the ground and
+   * obstacles as {@link Physics} decides).
    */
   void beforeCollisions() {
+    touchedBody = false;
     still = !kernel.isEnabled();
     for (LegModel leg : legs.values()) {
       still &= !leg.movesOnItsCarrier();
     }
     for (LegModel leg : legs.values()) {
       if (still) {
-        leg.contact |= leg.touching;
+        leg.contact |= leg.touchingAtom | leg.touchingGround;
       } else {
-        leg.touching = false;
+        leg.touchingAtom = false;
       }
     }
   }

@@ -10,7 +10,6 @@ record GeomTag(Kind kind, @Nullable AtomModel atom, @Nullable LegModel leg) {
 
   enum Kind {
     WORLD,
-    ATOM,
     KERNEL,
     LEG,
     RAY

@@ -4,6 +4,7 @@ import org.armgals.maam.spi.Leg;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
 import org.ode4j.ode.DBody;
+import org.ode4j.ode.DCapsule;
 import org.ode4j.ode.DJoint;
 import org.ode4j.ode.DJoint.DJointFeedback;
 import org.ode4j.ode.DRay;
@@ -23,8 +24,9 @@ final class JointedLeg extends LegModel {
   private double rate1;
   private double rate2;
 
-  JointedLeg(AtomModel atom, Leg leg, DBody body, DUniversalJoint joint, DRay ray) {
-    super(atom, leg, ray);
+  JointedLeg(
+      AtomModel atom, Leg leg, DBody body, DUniversalJoint joint, DCapsule capsule, DRay ray) {
+    super(atom, leg, capsule, ray);
     this.body = body;
     this.joint = joint;
     joint.setFeedback(feedback);
@@ -109,6 +111,11 @@ final class JointedLeg extends LegModel {
     torque2 = jx * axis.get0() + jy * axis.get1() + jz * axis.get2();
     rate1 = joint.getAngle1Rate();
     rate2 = joint.getAngle2Rate();
+  }
+
+  @Override
+  void bounds(double[] to) {
+    Boxes.copy(capsule.getAABB(), to, 0);
   }
 
   @Override

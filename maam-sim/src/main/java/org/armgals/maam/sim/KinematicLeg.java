@@ -24,7 +24,6 @@ import org.ode4j.ode.DRay;
 final class KinematicLeg extends LegModel {
 
   private final DBody kernel;
-  private final DCapsule capsule;
   private final double[] axis1;
   private final double[] axis2;
   private final DQuaternion rest;
@@ -50,10 +49,15 @@ final class KinematicLeg extends LegModel {
   private final DVector3 localTip = new DVector3();
   private DVector3 localAxis2 = new DVector3();
 
+  /** The capsule's centre in the kernel's frame. */
+  private final DVector3 centre = new DVector3();
+
+  /** Whether the capsule sits at the leg's pose on the kernel's body. */
+  private boolean placed;
+
   KinematicLeg(AtomModel atom, Leg leg, DBody kernel, DCapsule capsule, DRay ray) {
-    super(atom, leg, ray);
+    super(atom, leg, capsule, ray);
     this.kernel = kernel;
-    this.capsule = capsule;
     this.axis1 = Frames.axis1(leg);
     this.axis2 = Frames.axis2(leg);
     this.rest = Frames.zOnto(leg);
@@ -62,29 +66,53 @@ final class KinematicLeg extends LegModel {
     this.radius = p.kernelRadius();
     this.length = p.legLength();
     this.inertia = p.legMass() * length * length / 3;
-    place();
+    pose();
   }
 
   /**
-   * Places the capsule at the current angles. The joint turns the leg by {@code -a1} about axis 1
-   * (fixed on the kernel), then by {@code -a2} about axis 2 (fixed on the leg): the engine's
-   * universal joint's convention, which the jointed model reads.
+   * Sets the leg's pose from the current angles. The joint turns the leg by {@code -a1} about axis
+   * 1 (fixed on the kernel), then by {@code -a2} about axis 2 (fixed on the leg): the engine's
+   * universal joint's convention, which the jointed model reads. The capsule is placed there when a
+   * collision needs it ({@link #place()}).
    */
-  private void place() {
+  private void pose() {
     DQuaternion turn1 = Frames.about(axis1, -a1);
     local = Frames.multiply(Frames.multiply(turn1, Frames.about(axis2, -a2)), rest);
     localDirection = Frames.rotate(local, 0, 0, 1);
     localAxis2 = Frames.rotate(turn1, axis2[0], axis2[1], axis2[2]);
     double half = length / 2;
-    capsule.setOffsetPosition(
+    centre.set(
         restDirection[0] * radius + localDirection.get0() * half,
         restDirection[1] * radius + localDirection.get1() * half,
         restDirection[2] * radius + localDirection.get2() * half);
-    capsule.setOffsetQuaternion(local);
     localTip.set(
         restDirection[0] * radius + localDirection.get0() * length,
         restDirection[1] * radius + localDirection.get1() * length,
         restDirection[2] * radius + localDirection.get2() * length);
+    placed = false;
+  }
+
+  @Override
+  void bounds(double[] to) {
+    DVector3 tip = tip();
+    DVector3 pivot = pivot();
+    // The capsule lies within its radius of the segment from pivot to tip; a nanometre more
+    // covers the engine's rounding.
+    double r = atom.params.legRadius() + 1e-9;
+    for (int i = 0; i < 3; i++) {
+      to[2 * i] = Math.min(tip.get(i), pivot.get(i)) - r;
+      to[2 * i + 1] = Math.max(tip.get(i), pivot.get(i)) + r;
+    }
+  }
+
+  /** Places the capsule on the kernel's body at the leg's pose, if it is not there yet. */
+  @Override
+  void place() {
+    if (!placed) {
+      capsule.setOffsetPosition(centre);
+      capsule.setOffsetQuaternion(local);
+      placed = true;
+    }
   }
 
   @Override
@@ -111,7 +139,8 @@ final class KinematicLeg extends LegModel {
       r2 = (next[1] - a2) / dt;
       a1 = next[0];
       a2 = next[1];
-      place();
+      pose();
+      atom.parts.moved(this);
     }
     double accel1 = (r1 - rate1) / dt;
     double accel2 = (r2 - rate2) / dt;

@@ -5,6 +5,7 @@ import org.jspecify.annotations.Nullable;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
 import org.ode4j.ode.DBody;
+import org.ode4j.ode.DCapsule;
 import org.ode4j.ode.DRay;
 
 /**
@@ -16,6 +17,7 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
 
   final AtomModel atom;
   final Leg leg;
+  final DCapsule capsule;
   final DRay ray;
 
   /** The torques the motors applied to the leg about its two axes in the last step (N·m). */
@@ -32,14 +34,24 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
   /** The tip touched something during the current control period. */
   boolean contact;
 
-  /** The tip touched something in the last step whose collisions were computed for its atom. */
-  boolean touching;
+  /**
+   * The tip touched another atom in the last step whose collisions with other atoms were computed
+   * for its atom.
+   */
+  boolean touchingAtom;
+
+  /**
+   * The tip touched the ground or an obstacle in the last step whose collisions with them were
+   * computed for its atom.
+   */
+  boolean touchingGround;
 
   double proximity;
 
-  LegModel(AtomModel atom, Leg leg, DRay ray) {
+  LegModel(AtomModel atom, Leg leg, DCapsule capsule, DRay ray) {
     this.atom = atom;
     this.leg = leg;
+    this.capsule = capsule;
     this.ray = ray;
     this.torqueLimit = atom.params.maxTorque();
   }
@@ -94,6 +106,15 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
 
   /** The leg's pivot on the kernel's surface, in the world. */
   abstract DVector3 pivot();
+
+  /** Puts the capsule where the leg is, for a collision. */
+  void place() {}
+
+  /**
+   * Writes a box that holds the leg's capsule into {@code to} (see {@link Boxes}), found without
+   * placing the capsule.
+   */
+  abstract void bounds(double[] to);
 
   /** Places the proximity ray at the tip, pointing along the leg. */
   final void aimRay() {

@@ -4,12 +4,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.locks.ReentrantLock;
 import org.jspecify.annotations.Nullable;
-import org.ode4j.math.DMatrix3;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
-import org.ode4j.ode.DAABBC;
 import org.ode4j.ode.DBody;
-import org.ode4j.ode.DBox;
 import org.ode4j.ode.DContact;
 import org.ode4j.ode.DContactBuffer;
 import org.ode4j.ode.DContactJoint;
@@ -17,9 +14,6 @@ import org.ode4j.ode.DGeom;
 import org.ode4j.ode.DJoint.DJointFeedback;
 import org.ode4j.ode.DJointGroup;
 import org.ode4j.ode.DMisc;
-import org.ode4j.ode.DRay;
-import org.ode4j.ode.DRotation;
-import org.ode4j.ode.DSpace;
 import org.ode4j.ode.DWorld;
 import org.ode4j.ode.OdeConstants;
 import org.ode4j.ode.OdeHelper;
@@ -44,8 +38,6 @@ final class Physics {
    * with atoms of a few hundred grams, at half the cost of the engine's default 20.
    */
   private static final int SOLVER_ITERATIONS = 10;
-
-  private static final int PIPE_STAVES = 16;
 
   /**
    * A body whose speeds, averaged over {@link #REST_SAMPLES} steps, stay below these for {@link
@@ -82,16 +74,9 @@ final class Physics {
 
   final DWorld world;
 
-  /** The ground, the plane z = 0; like the obstacles, in no space (see {@link #collide()}). */
-  private final DGeom ground;
+  /** Which pairs the near callback looks at. */
+  private final BroadPhase broadPhase;
 
-  private final List<DGeom> obstacles = new ArrayList<>();
-
-  /** The atoms, in id order, and the spaces of their parts. */
-  private final List<AtomModel> atoms = new ArrayList<>();
-
-  private final List<DSpace> parts = new ArrayList<>();
-  private final AtomGrid grid = new AtomGrid();
   private final DJointGroup contacts = OdeHelper.createJointGroup();
   private final DContactBuffer buffer = new DContactBuffer(MAX_CONTACTS);
   private final double friction;
@@ -110,56 +95,12 @@ final class Physics {
     world.setQuickStepNumIterations(SOLVER_ITERATIONS);
     world.setContactMaxCorrectingVel(1.0);
     world.setContactSurfaceLayer(0.0005);
-    ground = OdeHelper.createPlane(null, 0, 0, 1, 0);
-    ground.setData(GeomTag.WORLD);
-    for (Obstacle o : scene.obstacles()) {
-      switch (o) {
-        case Obstacle.Box b -> box(b.center(), b.size(), new DMatrix3().setIdentity());
-        case Obstacle.Pipe p -> pipe(p);
-      }
-    }
+    broadPhase = new BroadPhase(new Ground(scene.obstacles()), nearCallback);
   }
 
-  private void box(Vec3 center, Vec3 size, DMatrix3 rotation) {
-    DBox box = OdeHelper.createBox(null, size.x(), size.y(), size.z());
-    box.setPosition(center.x(), center.y(), center.z());
-    box.setRotation(rotation);
-    box.setData(GeomTag.WORLD);
-    obstacles.add(box);
-  }
-
-  /** A pipe of flat staves around its axis: each stave a thin box, tangent to the inner radius. */
-  private void pipe(Obstacle.Pipe p) {
-    double mid = p.innerRadius() + p.wall() / 2;
-    double width = 2 * (p.innerRadius() + p.wall()) * Math.tan(Math.PI / PIPE_STAVES) * 1.05;
-    for (int i = 0; i < PIPE_STAVES; i++) {
-      double phi = 2 * Math.PI * i / PIPE_STAVES;
-      double u = Math.cos(phi) * mid;
-      double v = Math.sin(phi) * mid;
-      Vec3 c = p.center();
-      DMatrix3 r = new DMatrix3();
-      // A box with length along the pipe's axis, thickness along the radius, width tangent.
-      switch (p.axis()) {
-        case 'x' -> {
-          DRotation.dRFromAxisAndAngle(r, 1, 0, 0, phi);
-          box(new Vec3(c.x(), c.y() + u, c.z() + v), new Vec3(p.length(), p.wall(), width), r);
-        }
-        case 'y' -> {
-          DRotation.dRFromAxisAndAngle(r, 0, 1, 0, -phi);
-          box(new Vec3(c.x() + v, c.y(), c.z() + u), new Vec3(width, p.length(), p.wall()), r);
-        }
-        default -> {
-          DRotation.dRFromAxisAndAngle(r, 0, 0, 1, phi);
-          box(new Vec3(c.x() + u, c.y() + v, c.z()), new Vec3(p.wall(), width, p.length()), r);
-        }
-      }
-    }
-  }
-
-  /** Adds an atom, whose parts are in the space {@code atom.parts}; atoms are added in id order. */
+  /** Adds an atom; atoms are added in id order. */
   void add(AtomModel atom) {
-    atoms.add(atom);
-    parts.add(atom.parts);
+    broadPhase.add(atom);
   }
 
   /**
@@ -169,28 +110,7 @@ final class Physics {
   void castRays(List<LegModel> legs) {
     ENGINE.lock();
     try {
-      cleanParts();
-      DAABBC groundBox = ground.getAABB();
-      for (LegModel leg : legs) {
-        DRay ray = leg.ray;
-        DAABBC box = ray.getAABB();
-        if (overlap(box, groundBox)) {
-          near(null, ray, ground);
-        }
-        for (DGeom obstacle : obstacles) {
-          if (overlap(box, obstacle.getAABB())) {
-            near(null, ray, obstacle);
-          }
-        }
-        AtomModel own = leg.atom;
-        grid.forEachOverlapping(
-            box,
-            a -> {
-              if (atoms.get(a) != own) {
-                near(null, ray, parts.get(a));
-              }
-            });
-      }
+      broadPhase.castRays(legs);
     } finally {
       ENGINE.unlock();
     }
@@ -201,8 +121,9 @@ final class Physics {
     ENGINE.lock();
     try {
       DMisc.dRandSetSeed(seed);
-      collide();
+      broadPhase.collide();
       world.quickStep(dt);
+      broadPhase.stepped();
       seed = DMisc.dRandGetSeed();
     } finally {
       ENGINE.unlock();
@@ -211,78 +132,12 @@ final class Physics {
     contacts.empty();
   }
 
-  /**
-   * Brings the parts' bounding boxes up to date and files the atoms in the grid. Every atom's space
-   * is cleaned every time, as the engine's hash space did with its entries: the engine keeps a
-   * space's parts in the order they last moved in since it was cleaned, and contacts are made in
-   * that order.
-   */
-  private void cleanParts() {
-    for (DSpace s : parts) {
-      s.cleanGeoms();
-    }
-    grid.rebuild(parts);
-  }
-
-  /**
-   * Makes this step's contacts: between atoms whose boxes overlap (found with the {@link
-   * AtomGrid}), between atoms and obstacles, then between atoms and the ground. Each body's
-   * contacts are made in the order the engine's hash space made them (contacts with other atoms and
-   * obstacles first, then the ground's; each atom's parts in its space's order), except that pairs
-   * of atoms and of an atom and several obstacles come in an order of their own: the solver visits
-   * a body's contacts in the order they were made, so an atom that touches only the ground (and one
-   * obstacle) moves bit for bit as it did (decision 0062).
-   */
-  private void collide() {
-    cleanParts();
-    grid.forEachPair(pairNear);
-    for (DSpace s : parts) {
-      DAABBC box = s.getAABB();
-      for (DGeom obstacle : obstacles) {
-        if (overlap(box, obstacle.getAABB())) {
-          near(null, s, obstacle);
-        }
-      }
-    }
-    DAABBC groundBox = ground.getAABB();
-    for (DSpace s : parts) {
-      if (overlap(s.getAABB(), groundBox)) {
-        near(null, s, ground);
-      }
-    }
-  }
-
-  private final AtomGrid.PairVisitor pairNear = (a, b) -> near(null, parts.get(a), parts.get(b));
-
-  /** The engine's test: boxes that touch overlap. */
-  private static boolean overlap(DAABBC a, DAABBC b) {
-    return a.getMin0() <= b.getMax0()
-        && b.getMin0() <= a.getMax0()
-        && a.getMin1() <= b.getMax1()
-        && b.getMin1() <= a.getMax1()
-        && a.getMin2() <= b.getMax2()
-        && b.getMin2() <= a.getMax2();
-  }
-
   private final DGeom.DNearCallback nearCallback = this::near;
 
   private void near(Object data, DGeom o1, DGeom o2) {
     GeomTag t1 = (GeomTag) o1.getData();
     GeomTag t2 = (GeomTag) o2.getData();
-    boolean rays = t1.kind() == GeomTag.Kind.RAY || t2.kind() == GeomTag.Kind.RAY;
-    if (t1.kind() == GeomTag.Kind.ATOM || t2.kind() == GeomTag.Kind.ATOM) {
-      // An atom's space near something else: look inside.
-      if (!rays && still(t1) && still(t2)) {
-        // Nothing moves: the contacts would be those of the last step, which the solver ignores
-        // between resting bodies; the tips keep the contact state they had.
-        return;
-      }
-      if (t1.atom() != t2.atom()) {
-        OdeHelper.spaceCollide2(o1, o2, data, nearCallback);
-      }
-      return;
-    }
-    if (rays) {
+    if (t1.kind() == GeomTag.Kind.RAY || t2.kind() == GeomTag.Kind.RAY) {
       ray(t1, o1, t2, o2);
       return;
     }
@@ -333,8 +188,12 @@ final class Physics {
         joint.setFeedback(load.feedback);
         load.set(kinematic1 ? l1 : null, kinematic2 ? l2 : null, contact.geom.pos);
       }
-      touch(t1, contact.geom.pos);
-      touch(t2, contact.geom.pos);
+      touch(t1, t2, contact.geom.pos);
+      touch(t2, t1, contact.geom.pos);
+    }
+    if (n > 0 && b1 != null && b2 != null) {
+      t1.atom().touchedBody = true;
+      t2.atom().touchedBody = true;
     }
   }
 
@@ -437,22 +296,24 @@ final class Physics {
         sign * (rx * f.get1() - ry * f.get0()));
   }
 
-  /** A resting atom or the world, for collisions. */
-  private static boolean still(GeomTag tag) {
-    AtomModel atom = tag.atom();
-    return tag.kind() == GeomTag.Kind.WORLD || (atom != null && atom.still);
-  }
-
-  /** Marks a leg's tip as touching if the contact is on its far cap. */
-  private void touch(GeomTag tag, DVector3C at) {
+  /** Marks a leg's tip as touching {@code other} if the contact is on its far cap. */
+  private void touch(GeomTag tag, GeomTag other, DVector3C at) {
     LegModel leg = tag.leg();
-    if (tag.kind() != GeomTag.Kind.LEG || leg == null || leg.touching) {
+    if (tag.kind() != GeomTag.Kind.LEG || leg == null) {
+      return;
+    }
+    boolean world = other.kind() == GeomTag.Kind.WORLD;
+    if (world ? leg.touchingGround : leg.touchingAtom) {
       return;
     }
     DVector3 tip = leg.tip();
     if (tip.distance(at) <= 1.5 * legRadius) {
       leg.contact = true;
-      leg.touching = true;
+      if (world) {
+        leg.touchingGround = true;
+      } else {
+        leg.touchingAtom = true;
+      }
     }
   }
 
@@ -475,16 +336,7 @@ final class Physics {
 
   void destroy() {
     contacts.destroy();
-    for (AtomModel atom : atoms) {
-      atom.parts.destroy();
-      for (LegModel leg : atom.legs.values()) {
-        leg.ray.destroy();
-      }
-    }
-    for (DGeom obstacle : obstacles) {
-      obstacle.destroy();
-    }
-    ground.destroy();
+    broadPhase.destroy();
     world.destroy();
   }
 }

@@ -30,6 +30,40 @@ class PhysicsSanityTest {
     }
   }
 
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void anAtomWavingItsUpperLegsStaysWhereItStandsWithItsLowerTipsOnTheGround(LegDynamics dynamics) {
+    try (Simulation s =
+        Simulation.builder(Scenes.builtIn("single"))
+            .legDynamics(dynamics)
+            .controller(
+                1,
+                (body, cycle) -> {
+                  double a = 0.4 * Math.sin(cycle * 0.05);
+                  body.setLegTarget(Leg.PX, a, 0);
+                  body.setLegTarget(Leg.PY, 0, a);
+                  body.setLegTarget(Leg.PZ, a, -a);
+                })
+            .build()) {
+      s.runFor(Duration.ofMillis(500));
+      Vec3 settled = s.atom(1).sensors().position();
+      for (int cycle = 0; cycle < 200; cycle++) {
+        s.runCycle();
+        AtomSensors sensors = s.atom(1).sensors();
+        for (Leg leg : new Leg[] {Leg.MX, Leg.MY, Leg.MZ}) {
+          assertThat(sensors.leg(leg).tipContact()).as("tip %s on the ground", leg).isTrue();
+        }
+        for (Leg leg : new Leg[] {Leg.PX, Leg.PY, Leg.PZ}) {
+          assertThat(sensors.leg(leg).tipContact()).as("tip %s in the air", leg).isFalse();
+        }
+      }
+      assertThat(TestScenes.distance(settled, s.atom(1).sensors().position())).isLessThan(0.002);
+      if (dynamics == LegDynamics.KINEMATIC) {
+        assertThat(((BodyView) s.atom(1)).model.kernel.isEnabled()).as("at rest").isFalse();
+      }
+    }
+  }
+
   @Test
   void aKinematicLegThatReachesItsTargetStopsThereAndItsAtomRests() {
     try (Simulation s =
