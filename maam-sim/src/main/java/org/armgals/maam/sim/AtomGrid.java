@@ -75,14 +75,19 @@ final class AtomGrid {
   /** Visits every pair of atoms whose boxes overlap, each once. */
   void forEachPair(PairVisitor visitor) {
     for (int a = 0; a < count; a++) {
-      int x = cellX[a];
-      int y = cellY[a];
-      for (int dy = -1; dy <= 1; dy++) {
-        for (int dx = -1; dx <= 1; dx++) {
-          for (int b = heads[hash(x + dx, y + dy)]; b >= 0; b = next[b]) {
-            if (b > a && cellX[b] == x + dx && cellY[b] == y + dy && overlap(a, b)) {
-              visitor.visit(a, b);
-            }
+      forEachPairOf(a, visitor);
+    }
+  }
+
+  /** Visits every pair of atom {@code a} and a later atom whose boxes overlap. */
+  void forEachPairOf(int a, PairVisitor visitor) {
+    int x = cellX[a];
+    int y = cellY[a];
+    for (int dy = -1; dy <= 1; dy++) {
+      for (int dx = -1; dx <= 1; dx++) {
+        for (int b = heads[hash(x + dx, y + dy)]; b >= 0; b = next[b]) {
+          if (b > a && cellX[b] == x + dx && cellY[b] == y + dy && overlap(a, b)) {
+            visitor.visit(a, b);
           }
         }
       }

@@ -1,9 +1,7 @@
 package org.armgals.maam.sim;
 
 import java.util.ArrayList;
-import java.util.EnumMap;
 import java.util.List;
-import java.util.Map;
 import org.armgals.maam.spi.Leg;
 import org.ode4j.math.DMatrix3;
 import org.ode4j.math.DQuaternion;
@@ -32,7 +30,9 @@ final class AtomModel {
   final Cone cone;
 
   final DBody kernel;
-  final Map<Leg, LegModel> legs = new EnumMap<>(Leg.class);
+
+  /** The legs, in the order of {@link Leg}. */
+  final LegModel[] legs = new LegModel[Leg.values().length];
 
   /**
    * The atom's kernel and leg capsules as the broad phase sees them; they are never tested against
@@ -52,14 +52,8 @@ final class AtomModel {
    */
   boolean still;
 
-  /** This step a contact joined the atom's body to another body, which may wake it. */
-  boolean touchedBody;
-
-  /**
-   * This step the atom's contacts with the ground and obstacles are left out, none of them counting
-   * (see {@link Physics}).
-   */
-  boolean restsOnTheGround;
+  /** The atom's place in the simulation's list (and the broad phase's), in id order. */
+  final int index;
 
   double energy;
   boolean failed;
@@ -72,7 +66,13 @@ final class AtomModel {
   double pushY;
   double pushZ;
 
-  AtomModel(Physics physics, Scene.Placement placement, AtomParams params, LegDynamics dynamics) {
+  AtomModel(
+      Physics physics,
+      int index,
+      Scene.Placement placement,
+      AtomParams params,
+      LegDynamics dynamics) {
+    this.index = index;
     this.id = placement.id();
     this.params = params;
     this.cone = new Cone(params.coneHalfAngle());
@@ -111,16 +111,16 @@ final class AtomModel {
       model.proximity = params.proximityRange();
       capsule.setData(new GeomTag(GeomTag.Kind.LEG, this, model));
       ray.setData(new GeomTag(GeomTag.Kind.RAY, this, model));
-      legs.put(leg, model);
+      legs[leg.ordinal()] = model;
     }
     if (space != null) {
-      parts = new SpaceParts(space, legs.size() + 1);
+      parts = new SpaceParts(space, legs.length + 1);
     } else {
-      KinematicLeg[] kinematic = new KinematicLeg[legs.size()];
-      for (LegModel leg : legs.values()) {
+      KinematicLeg[] kinematic = new KinematicLeg[legs.length];
+      for (LegModel leg : legs) {
         kinematic[leg.leg.ordinal()] = (KinematicLeg) leg;
       }
-      parts = new KinematicParts(kernel, sphere, kinematic, params.reach());
+      parts = new KinematicParts(kernel, sphere, params.kernelRadius(), kinematic, params.reach());
     }
     // The legs sit symmetrically, so the centre of mass is the kernel's centre up to rounding; the
     // engine wants it exactly there.
@@ -180,12 +180,11 @@ final class AtomModel {
    * obstacles as {@link Physics} decides).
    */
   void beforeCollisions() {
-    touchedBody = false;
     still = !kernel.isEnabled();
-    for (LegModel leg : legs.values()) {
+    for (LegModel leg : legs) {
       still &= !leg.movesOnItsCarrier();
     }
-    for (LegModel leg : legs.values()) {
+    for (LegModel leg : legs) {
       if (still) {
         leg.contact |= leg.touchingAtom | leg.touchingGround;
       } else {
@@ -194,8 +193,15 @@ final class AtomModel {
     }
   }
 
+  /** After the engine's step: a body it stepped has moved its parts. */
+  void stepped() {
+    if (kernel.isEnabled()) {
+      parts.bodyMoved();
+    }
+  }
+
   LegModel leg(Leg leg) {
-    return legs.get(leg);
+    return legs[leg.ordinal()];
   }
 
   boolean motorsOn() {
@@ -225,14 +231,14 @@ final class AtomModel {
    * mechanical power over their efficiency. Returns true the step it runs empty.
    */
   boolean drain(double dt) {
-    for (LegModel leg : legs.values()) {
+    for (LegModel leg : legs) {
       leg.afterStep(dt);
     }
     if (failed || energy <= 0) {
       return false;
     }
     double power = params.idleDraw();
-    for (LegModel leg : legs.values()) {
+    for (LegModel leg : legs) {
       if (!leg.failed) {
         power += leg.motorPower() / params.motorEfficiency();
       }

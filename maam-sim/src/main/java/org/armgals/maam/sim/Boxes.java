@@ -29,4 +29,34 @@ final class Boxes {
         && a[i + 4] <= b[j + 5]
         && b[j + 4] <= a[i + 5];
   }
+
+  /**
+   * Whether the segment from {@code aim[0..2]} along the unit direction {@code aim[3..5]}, {@code
+   * length} long, surely misses the box in {@code box} at {@code at} (the box taken a nanometre
+   * larger, for rounding).
+   */
+  static boolean segmentMisses(double[] box, int at, double[] aim, double length) {
+    double enter = 0;
+    double leave = length;
+    for (int axis = 0; axis < 3; axis++) {
+      double from = aim[axis];
+      double along = aim[3 + axis];
+      double lo = box[at + 2 * axis] - 1e-9;
+      double hi = box[at + 2 * axis + 1] + 1e-9;
+      if (along == 0) {
+        if (from < lo || from > hi) {
+          return true;
+        }
+      } else {
+        double a = (lo - from) / along;
+        double b = (hi - from) / along;
+        enter = Math.max(enter, Math.min(a, b));
+        leave = Math.min(leave, Math.max(a, b));
+        if (enter > leave) {
+          return true;
+        }
+      }
+    }
+    return false;
+  }
 }

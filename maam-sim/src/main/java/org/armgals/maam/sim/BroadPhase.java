@@ -1,6 +1,7 @@
 package org.armgals.maam.sim;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import org.jspecify.annotations.Nullable;
 import org.ode4j.ode.DGeom;
@@ -31,6 +32,7 @@ final class BroadPhase {
   private final AtomGrid grid = new AtomGrid();
   private final double[] box = new double[6];
   private final double[] other = new double[6];
+  private final double[] groundBox = new double[6];
   private final DGeom.DNearCallback near;
   private final AtomGrid.PairVisitor pairs = this::pair;
 
@@ -39,37 +41,86 @@ final class BroadPhase {
     this.near = near;
   }
 
-  /** Adds an atom; atoms are added in id order. */
+  /** Adds an atom; atoms are added in id order, each at its {@link AtomModel#index}. */
   void add(AtomModel atom) {
+    if (atom.index != atoms.size()) {
+      throw new IllegalArgumentException(
+          "atom " + atom.id + " at index " + atom.index + ": expected index " + atoms.size());
+    }
     atoms.add(atom);
+    int n = atoms.size();
+    boxes = Arrays.copyOf(boxes, 6 * n);
+    quiet = Arrays.copyOf(quiet, n);
+    joined = Arrays.copyOf(joined, n);
   }
 
   /**
-   * Calls the near callback on this step's pairs: atoms with atoms, then each atom with the
-   * obstacles and the ground (unless it {@link #restsOnTheGround rests on them}).
+   * Whether each atom's contacts with the ground and obstacles are left out this step unless
+   * another body joins it ({@link #joined}): it is still, or it {@link #restsOnTheGround rests}.
+   */
+  private boolean[] quiet = new boolean[0];
+
+  /** Whether a contact made this step joined each atom's body to another body. */
+  private boolean[] joined = new boolean[0];
+
+  /** A contact made this step joined {@code atom}'s body to another body, which may wake it. */
+  void joined(AtomModel atom) {
+    joined[atom.index] = true;
+  }
+
+  /**
+   * Before a step's collisions, for each atom after its servos and its bindings: decides whether it
+   * is still, starts the pass on its parts (the engine cleaned every space at the start of one),
+   * files its box, and decides whether its contacts with the ground can be left out, as far as that
+   * can be told before other atoms' contacts are made; its tips keep touching the ground where they
+   * do. Done while the atom is at hand: with a thousand atoms, every pass over them reads them from
+   * memory afresh.
+   */
+  void prepare(AtomModel atom) {
+    int i = atom.index;
+    atom.beforeCollisions();
+    atom.parts.clean();
+    atom.parts.box(boxes, 6 * i);
+    joined[i] = false;
+    boolean rests = !atom.still && restsOnTheGround(atom);
+    quiet[i] = atom.still || rests;
+    for (LegModel leg : atom.legs) {
+      if (atom.still || rests && !leg.movesOnItsCarrier()) {
+        // Neither the part nor what it touched moved.
+        leg.contact |= leg.touchingGround;
+      } else {
+        leg.touchingGround = false;
+      }
+    }
+  }
+
+  /**
+   * Calls the near callback on this step's pairs, every atom {@link #prepare prepared}: for each
+   * atom in turn, its pairs with the atoms after it, then (as all its pairs with other atoms are
+   * made) its pairs with the obstacles and the ground, unless they are left out.
    */
   void collide() {
-    clean();
-    grid.forEachPair(pairs);
+    grid.rebuild(boxes, atoms.size());
     for (int i = 0; i < atoms.size(); i++) {
-      AtomModel atom = atoms.get(i);
-      atom.restsOnTheGround = !atom.still && restsOnTheGround(atom);
-      for (LegModel leg : atom.legs.values()) {
-        if (atom.still || atom.restsOnTheGround && !leg.movesOnItsCarrier()) {
-          // Neither the part nor what it touched moved.
-          leg.contact |= leg.touchingGround;
-        } else {
-          leg.touchingGround = false;
-        }
-      }
-      if (atom.still || atom.restsOnTheGround) {
+      grid.forEachPairOf(i, pairs);
+      if (quiet[i] && !joined[i]) {
         // The solver would ignore its contacts with what does not move.
         continue;
       }
+      AtomModel atom = atoms.get(i);
+      if (atom.still) {
+        continue;
+      }
+      if (quiet[i]) {
+        // Another body touched it, and may wake it: its contacts with the ground count after all.
+        for (LegModel leg : atom.legs) {
+          leg.touchingGround = false;
+        }
+      }
       for (int g = 0; g < ground.geoms.size(); g++) {
         if (ground.overlaps(g, boxes, 6 * i)) {
-          ground.box(g, other, 0);
-          collideParts(atom, ground.geoms.get(g), other);
+          ground.box(g, groundBox, 0);
+          collideParts(atom, ground.geoms.get(g), groundBox, null, 0);
         }
       }
     }
@@ -87,9 +138,15 @@ final class BroadPhase {
     Parts partsA = atomA.parts;
     Parts partsB = atomB.parts;
     for (int i = 0; i < partsA.count(); i++) {
+      if (partsA.bound(i, box) && !Boxes.overlap(box, 0, boxes, 6 * b)) {
+        continue;
+      }
       DGeom g = partsA.part(i);
       Boxes.copy(g.getAABB(), box, 0);
       for (int j = 0; j < partsB.count(); j++) {
+        if (partsB.bound(j, other) && !Boxes.overlap(other, 0, box, 0)) {
+          continue;
+        }
         DGeom h = partsB.part(j);
         Boxes.copy(h.getAABB(), other, 0);
         if (Boxes.overlap(box, 0, other, 0)) {
@@ -101,11 +158,18 @@ final class BroadPhase {
 
   /**
    * The near callback on each part of {@code atom} whose box overlaps {@code with}'s ({@code
-   * withBox}), in the parts' order: the engine's simple space's collide2.
+   * withBox}), in the parts' order: the engine's simple space's collide2. A ray ({@code aim} not
+   * null) is not tried against parts its segment surely misses.
    */
-  private void collideParts(AtomModel atom, DGeom with, double[] withBox) {
+  private void collideParts(
+      AtomModel atom, DGeom with, double[] withBox, double @Nullable [] aim, double length) {
     Parts parts = atom.parts;
     for (int i = 0; i < parts.count(); i++) {
+      if (parts.bound(i, other)
+          && (!Boxes.overlap(other, 0, withBox, 0)
+              || aim != null && Boxes.segmentMisses(other, 0, aim, length))) {
+        continue;
+      }
       DGeom g = parts.part(i);
       Boxes.copy(g.getAABB(), box, 0);
       if (Boxes.overlap(box, 0, withBox, 0)) {
@@ -142,52 +206,40 @@ final class BroadPhase {
   private void rayNear(int a) {
     AtomModel atom = atoms.get(a);
     LegModel leg = casting;
-    if (leg != null && atom != leg.atom) {
-      collideParts(atom, leg.ray, rayBox);
+    if (leg != null
+        && atom != leg.atom
+        && !Boxes.segmentMisses(boxes, 6 * a, leg.aim, leg.atom.params.proximityRange())) {
+      collideParts(atom, leg.ray, rayBox, leg.aim, leg.atom.params.proximityRange());
     }
   }
 
-  /** After the engine's step: the bodies it moved marked their parts. */
-  void stepped() {
-    for (AtomModel atom : atoms) {
-      if (atom.kernel.isEnabled()) {
-        atom.parts.bodyMoved();
-      }
-    }
-  }
-
-  /** Starts a pass: cleans every atom's parts, as the engine did, and files the atoms' boxes. */
+  /** Starts the sensing pass: cleans every atom's parts and files their boxes. */
   private void clean() {
-    int n = atoms.size();
-    if (boxes.length < 6 * n) {
-      boxes = new double[6 * n];
+    for (AtomModel atom : atoms) {
+      atom.parts.clean();
+      atom.parts.box(boxes, 6 * atom.index);
     }
-    for (int i = 0; i < n; i++) {
-      Parts parts = atoms.get(i).parts;
-      parts.clean();
-      parts.box(boxes, 6 * i);
-    }
-    grid.rebuild(boxes, n);
+    grid.rebuild(boxes, atoms.size());
   }
 
   /**
    * Whether every contact {@code atom} would have with the ground and the obstacles this step is
    * one the solver ignores, so that none need be made: its body rests and stays at rest through the
-   * step, for no binding holds it and no contact made this step joins it to another body, and the
-   * legs that turn (whose contacts would wake it) touch none of them, their boxes overlapping none.
-   * A still atom's contacts are left out as well; this leaves out those of an atom at rest that
-   * waves its legs in the air.
+   * step, for no binding holds it and (unless a contact with another body {@link #joined joins} it)
+   * nothing else wakes it, and the legs that turn (whose contacts would wake it) touch none of
+   * them, their boxes overlapping none. A still atom's contacts are left out as well; this leaves
+   * out those of an atom at rest that waves its legs in the air.
    */
   private boolean restsOnTheGround(AtomModel atom) {
-    if (atom.kernel.isEnabled() || atom.touchedBody) {
+    if (atom.kernel.isEnabled()) {
       return false;
     }
-    for (LegModel leg : atom.legs.values()) {
+    for (LegModel leg : atom.legs) {
       if (leg.binding != null) {
         return false;
       }
       if (leg.movesOnItsCarrier()) {
-        leg.bounds(box);
+        atom.parts.legBox(leg, box);
         if (ground.touches(box, 0)) {
           leg.place();
           Boxes.copy(leg.capsule.getAABB(), box, 0);
@@ -203,7 +255,7 @@ final class BroadPhase {
   void destroy() {
     for (AtomModel atom : atoms) {
       atom.parts.destroy();
-      for (LegModel leg : atom.legs.values()) {
+      for (LegModel leg : atom.legs) {
         leg.ray.destroy();
       }
     }

@@ -43,8 +43,10 @@ final class Cone {
   void clamp(double a1, double a2, double[] out) {
     a1 = Math.max(-halfAngle, Math.min(halfAngle, a1));
     a2 = Math.max(-halfAngle, Math.min(halfAngle, a2));
-    // tilt <= halfAngle exactly when cos a1 · cos a2 >= cos halfAngle (no acos on the way).
-    if (inside(a1, a2)) {
+    // tilt <= halfAngle exactly when cos a1 · cos a2 >= cos halfAngle (no acos on the way); and
+    // cos a1 · cos a2 >= cos(|a1| + |a2|), so angles whose magnitudes sum to less than the
+    // half-angle (a nanoradian less, for rounding) are inside without a cosine.
+    if (Math.abs(a1) + Math.abs(a2) <= halfAngle - 1e-9 || inside(a1, a2)) {
       out[0] = a1;
       out[1] = a2;
       return;

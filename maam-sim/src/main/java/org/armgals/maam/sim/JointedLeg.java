@@ -114,11 +114,6 @@ final class JointedLeg extends LegModel {
   }
 
   @Override
-  void bounds(double[] to) {
-    Boxes.copy(capsule.getAABB(), to, 0);
-  }
-
-  @Override
   double motorPower() {
     return Math.abs(torque1 * rate1) + Math.abs(torque2 * rate2);
   }

@@ -1,7 +1,6 @@
 package org.armgals.maam.sim;
 
 import org.armgals.maam.spi.Leg;
-import org.ode4j.math.DQuaternion;
 import org.ode4j.math.DQuaternionC;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
@@ -25,11 +24,9 @@ final class KinematicLeg extends LegModel {
 
   private final DBody kernel;
   private final double[] axis1;
-  private final double[] axis2;
-  private final DQuaternion rest;
-  private final double[] restDirection;
-  private final double radius;
-  private final double length;
+
+  /** Where the leg is on the kernel, at its angles. */
+  private final LegPose pose;
 
   /** The leg's moment of inertia about its pivot (kg·m²), as a rod. */
   private final double inertia;
@@ -44,13 +41,6 @@ final class KinematicLeg extends LegModel {
   private double loadY;
   private double loadZ;
   private final double[] next = new double[2];
-  private DQuaternion local = new DQuaternion(1, 0, 0, 0);
-  private DVector3 localDirection = new DVector3();
-  private final DVector3 localTip = new DVector3();
-  private DVector3 localAxis2 = new DVector3();
-
-  /** The capsule's centre in the kernel's frame. */
-  private final DVector3 centre = new DVector3();
 
   /** Whether the capsule sits at the leg's pose on the kernel's body. */
   private boolean placed;
@@ -58,61 +48,28 @@ final class KinematicLeg extends LegModel {
   KinematicLeg(AtomModel atom, Leg leg, DBody kernel, DCapsule capsule, DRay ray) {
     super(atom, leg, capsule, ray);
     this.kernel = kernel;
-    this.axis1 = Frames.axis1(leg);
-    this.axis2 = Frames.axis2(leg);
-    this.rest = Frames.zOnto(leg);
-    this.restDirection = new double[] {leg.x(), leg.y(), leg.z()};
     AtomParams p = atom.params;
-    this.radius = p.kernelRadius();
-    this.length = p.legLength();
-    this.inertia = p.legMass() * length * length / 3;
-    pose();
-  }
-
-  /**
-   * Sets the leg's pose from the current angles. The joint turns the leg by {@code -a1} about axis
-   * 1 (fixed on the kernel), then by {@code -a2} about axis 2 (fixed on the leg): the engine's
-   * universal joint's convention, which the jointed model reads. The capsule is placed there when a
-   * collision needs it ({@link #place()}).
-   */
-  private void pose() {
-    DQuaternion turn1 = Frames.about(axis1, -a1);
-    local = Frames.multiply(Frames.multiply(turn1, Frames.about(axis2, -a2)), rest);
-    localDirection = Frames.rotate(local, 0, 0, 1);
-    localAxis2 = Frames.rotate(turn1, axis2[0], axis2[1], axis2[2]);
-    double half = length / 2;
-    centre.set(
-        restDirection[0] * radius + localDirection.get0() * half,
-        restDirection[1] * radius + localDirection.get1() * half,
-        restDirection[2] * radius + localDirection.get2() * half);
-    localTip.set(
-        restDirection[0] * radius + localDirection.get0() * length,
-        restDirection[1] * radius + localDirection.get1() * length,
-        restDirection[2] * radius + localDirection.get2() * length);
-    placed = false;
-  }
-
-  @Override
-  void bounds(double[] to) {
-    DVector3 tip = tip();
-    DVector3 pivot = pivot();
-    // The capsule lies within its radius of the segment from pivot to tip; a nanometre more
-    // covers the engine's rounding.
-    double r = atom.params.legRadius() + 1e-9;
-    for (int i = 0; i < 3; i++) {
-      to[2 * i] = Math.min(tip.get(i), pivot.get(i)) - r;
-      to[2 * i + 1] = Math.max(tip.get(i), pivot.get(i)) + r;
-    }
+    this.pose = new LegPose(leg, p.kernelRadius(), p.legLength());
+    this.axis1 = pose.axis1;
+    this.inertia = p.legMass() * p.legLength() * p.legLength() / 3;
   }
 
   /** Places the capsule on the kernel's body at the leg's pose, if it is not there yet. */
   @Override
   void place() {
     if (!placed) {
-      capsule.setOffsetPosition(centre);
-      capsule.setOffsetQuaternion(local);
+      capsule.setOffsetPosition(pose.centre());
+      capsule.setOffsetQuaternion(pose.local());
       placed = true;
     }
+  }
+
+  /**
+   * Writes a box in the kernel's frame that holds the capsule wherever it turns in its cone (see
+   * {@link LegPose#coneBox}).
+   */
+  void coneBox(double[] to) {
+    pose.coneBox(atom.params.coneHalfAngle(), atom.params.legRadius(), to);
   }
 
   @Override
@@ -139,7 +96,8 @@ final class KinematicLeg extends LegModel {
       r2 = (next[1] - a2) / dt;
       a1 = next[0];
       a2 = next[1];
-      pose();
+      pose.set(a1, a2);
+      placed = false;
       atom.parts.moved(this);
     }
     double accel1 = (r1 - rate1) / dt;
@@ -154,18 +112,23 @@ final class KinematicLeg extends LegModel {
       // the body's, so nothing else would turn it back).
       double k1 = inertia * accel1;
       double k2 = inertia * accel2;
-      double tx = k1 * axis1[0] + k2 * localAxis2.get0();
-      double ty = k1 * axis1[1] + k2 * localAxis2.get1();
-      double tz = k1 * axis1[2] + k2 * localAxis2.get2();
-      if (!kernel.isEnabled()
-          && Math.sqrt(tx * tx + ty * ty + tz * tz) * dt
-              > Physics.REST_ANGULAR * atom.turnInertia) {
-        // A reaction that would turn the resting atom faster than rest allows wakes it; a smaller
-        // one is taken by what it rests on.
-        kernel.enable();
-      }
-      if (kernel.isEnabled()) {
-        kernel.addRelTorque(tx, ty, tz);
+      double wakes = Physics.REST_ANGULAR * atom.turnInertia;
+      boolean enabled = kernel.isEnabled();
+      // The torque is no larger than |k1| + |k2| (the axes are unit vectors): when that is well
+      // under what wakes a resting atom, the torque need not be worked out.
+      if (enabled || (Math.abs(k1) + Math.abs(k2)) * (1 + 1e-9) * dt > wakes) {
+        DVector3 turned = pose.axis2();
+        double tx = k1 * axis1[0] + k2 * turned.get0();
+        double ty = k1 * axis1[1] + k2 * turned.get1();
+        double tz = k1 * axis1[2] + k2 * turned.get2();
+        if (!enabled && Math.sqrt(tx * tx + ty * ty + tz * tz) * dt > wakes) {
+          // A reaction that would turn the resting atom faster than rest allows wakes it; a
+          // smaller one is taken by what it rests on.
+          kernel.enable();
+        }
+        if (kernel.isEnabled()) {
+          kernel.addRelTorque(tx, ty, tz);
+        }
       }
     }
   }
@@ -241,7 +204,7 @@ final class KinematicLeg extends LegModel {
     kernel.vectorFromWorld(loadX, loadY, loadZ, t);
     // Angles grow with negative turns about the axes.
     load1 = -(t.get0() * axis1[0] + t.get1() * axis1[1] + t.get2() * axis1[2]);
-    load2 = -t.dot(localAxis2);
+    load2 = -t.dot(pose.axis2());
     loadX = 0;
     loadY = 0;
     loadZ = 0;
@@ -259,12 +222,12 @@ final class KinematicLeg extends LegModel {
 
   /** The leg's rotation in the kernel's frame (its local z is the leg's direction). */
   DQuaternionC localRotation() {
-    return local;
+    return pose.local();
   }
 
   /** The tip in the kernel's frame. */
   DVector3 localTip() {
-    return new DVector3(localTip);
+    return new DVector3(pose.tip());
   }
 
   /** Whether the leg turned in the last step. */
@@ -275,22 +238,21 @@ final class KinematicLeg extends LegModel {
   @Override
   DVector3 direction() {
     DVector3 d = new DVector3();
-    kernel.vectorToWorld(localDirection, d);
+    kernel.vectorToWorld(pose.direction(), d);
     return d;
   }
 
   @Override
   DVector3 tip() {
     DVector3 t = new DVector3();
-    kernel.getRelPointPos(localTip, t);
+    kernel.getRelPointPos(pose.tip(), t);
     return t;
   }
 
   @Override
   DVector3 pivot() {
     DVector3 p = new DVector3();
-    kernel.getRelPointPos(
-        restDirection[0] * radius, restDirection[1] * radius, restDirection[2] * radius, p);
+    kernel.getRelPointPos(pose.pivot(0), pose.pivot(1), pose.pivot(2), p);
     return p;
   }
 
@@ -302,9 +264,10 @@ final class KinematicLeg extends LegModel {
   @Override
   void velocityAt(DVector3C p, DVector3 out) {
     // The leg's angular velocity relative to the kernel, in the kernel's frame, then the world's.
-    double wx = -(rate1 * axis1[0] + rate2 * localAxis2.get0());
-    double wy = -(rate1 * axis1[1] + rate2 * localAxis2.get1());
-    double wz = -(rate1 * axis1[2] + rate2 * localAxis2.get2());
+    DVector3 turned = pose.axis2();
+    double wx = -(rate1 * axis1[0] + rate2 * turned.get0());
+    double wy = -(rate1 * axis1[1] + rate2 * turned.get1());
+    double wz = -(rate1 * axis1[2] + rate2 * turned.get2());
     DVector3 w = new DVector3();
     kernel.vectorToWorld(wx, wy, wz, w);
     DVector3 r = new DVector3(p).sub(pivot());

@@ -48,6 +48,9 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
 
   double proximity;
 
+  /** Where the ray was last aimed from (the tip) and along (the leg's direction). */
+  final double[] aim = new double[6];
+
   LegModel(AtomModel atom, Leg leg, DCapsule capsule, DRay ray) {
     this.atom = atom;
     this.leg = leg;
@@ -110,16 +113,16 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
   /** Puts the capsule where the leg is, for a collision. */
   void place() {}
 
-  /**
-   * Writes a box that holds the leg's capsule into {@code to} (see {@link Boxes}), found without
-   * placing the capsule.
-   */
-  abstract void bounds(double[] to);
-
   /** Places the proximity ray at the tip, pointing along the leg. */
   final void aimRay() {
     DVector3 d = direction();
     DVector3 tip = tip();
+    aim[0] = tip.get0();
+    aim[1] = tip.get1();
+    aim[2] = tip.get2();
+    aim[3] = d.get0();
+    aim[4] = d.get1();
+    aim[5] = d.get2();
     ray.set(tip, d);
     ray.setLength(atom.params.proximityRange());
     proximity = atom.params.proximityRange();

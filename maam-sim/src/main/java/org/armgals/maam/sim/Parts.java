@@ -23,6 +23,15 @@ sealed interface Parts permits SpaceParts, KinematicParts {
   /** Part {@code i} in contact order (after {@link #clean()}), placed where it is now. */
   DGeom part(int i);
 
+  /**
+   * Writes a box that surely holds part {@code i} (in contact order) into {@code to} at 0, found
+   * without placing the part, and returns true; false if there is none cheaper than the part's own.
+   */
+  boolean bound(int i, double[] to);
+
+  /** Writes a box that holds {@code leg}'s capsule into {@code to} at 0, without placing it. */
+  void legBox(LegModel leg, double[] to);
+
   /** {@code leg}'s capsule moved on its body (its engine geometry would have been marked). */
   void moved(LegModel leg);
 

@@ -116,14 +116,24 @@ final class Physics {
     }
   }
 
-  /** Collides, steps the world by {@code dt} seconds, and clears the contacts. */
+  /**
+   * Before a step's collisions, once for each atom after its servos and its bindings' joints have
+   * moved: see {@link BroadPhase#prepare}.
+   */
+  void prepare(AtomModel atom) {
+    broadPhase.prepare(atom);
+  }
+
+  /**
+   * Collides, steps the world by {@code dt} seconds, and clears the contacts; every atom has been
+   * {@link #prepare prepared}.
+   */
   void step(double dt) {
     ENGINE.lock();
     try {
       DMisc.dRandSetSeed(seed);
       broadPhase.collide();
       world.quickStep(dt);
-      broadPhase.stepped();
       seed = DMisc.dRandGetSeed();
     } finally {
       ENGINE.unlock();
@@ -192,8 +202,8 @@ final class Physics {
       touch(t2, t1, contact.geom.pos);
     }
     if (n > 0 && b1 != null && b2 != null) {
-      t1.atom().touchedBody = true;
-      t2.atom().touchedBody = true;
+      broadPhase.joined(t1.atom());
+      broadPhase.joined(t2.atom());
     }
   }
 

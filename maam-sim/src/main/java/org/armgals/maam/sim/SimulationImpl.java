@@ -52,7 +52,7 @@ final class SimulationImpl implements Simulation {
     List<Scene.Placement> placements = new ArrayList<>(scene.atoms());
     placements.sort(Comparator.comparingInt(Scene.Placement::id));
     for (Scene.Placement p : placements) {
-      AtomModel atom = new AtomModel(physics, p, scene.params(), b.legDynamics);
+      AtomModel atom = new AtomModel(physics, atoms.size(), p, scene.params(), b.legDynamics);
       atoms.add(atom);
       physics.add(atom);
       bodies.put(p.id(), new BodyView(this, atom, sense(atom)));
@@ -174,22 +174,34 @@ final class SimulationImpl implements Simulation {
     pacer.pace(timeNanos);
   }
 
+  /**
+   * One physics step. Each pass over the atoms does all it can for an atom at once: with a thousand
+   * atoms, each pass reads them from memory afresh.
+   */
   private void physicsStep() {
-    for (AtomModel atom : atoms) {
+    // Bindings re-fix their joints after both legs' servos and before collisions.
+    boolean follow = !bindings.isEmpty();
+    for (int i = 0; i < atoms.size(); i++) {
+      AtomModel atom = atoms.get(i);
       if (atom.pushX != 0 || atom.pushY != 0 || atom.pushZ != 0) {
         atom.kernel.enable();
         atom.kernel.addForce(atom.pushX, atom.pushY, atom.pushZ);
       }
       boolean on = atom.motorsOn();
-      for (LegModel leg : atom.legs.values()) {
+      for (LegModel leg : atom.legs) {
         leg.servo(on, dt);
       }
+      if (!follow) {
+        physics.prepare(atom);
+      }
     }
-    for (Binding binding : bindings) {
-      binding.follow();
-    }
-    for (AtomModel atom : atoms) {
-      atom.beforeCollisions();
+    if (follow) {
+      for (Binding binding : bindings) {
+        binding.follow();
+      }
+      for (int i = 0; i < atoms.size(); i++) {
+        physics.prepare(atoms.get(i));
+      }
     }
     physics.step(dt);
     for (Binding binding : bindings) {
@@ -197,6 +209,7 @@ final class SimulationImpl implements Simulation {
     }
     timeNanos += stepNanos;
     for (AtomModel atom : atoms) {
+      atom.stepped();
       if (atom.drain(dt)) {
         events.add(new SimEvent.BatteryEmpty(timeNanos, atom.id));
       }
@@ -224,7 +237,7 @@ final class SimulationImpl implements Simulation {
   private void senseAll() {
     sensing.clear();
     for (AtomModel atom : atoms) {
-      for (LegModel leg : atom.legs.values()) {
+      for (LegModel leg : atom.legs) {
         if (atom.failed || leg.failed) {
           continue;
         }
@@ -239,7 +252,7 @@ final class SimulationImpl implements Simulation {
     physics.castRays(sensing);
     for (AtomModel atom : atoms) {
       bodies.get(atom.id).sensors = sense(atom);
-      for (LegModel leg : atom.legs.values()) {
+      for (LegModel leg : atom.legs) {
         leg.contact = false;
       }
     }

@@ -42,6 +42,16 @@ final class SpaceParts implements Parts {
   }
 
   @Override
+  public boolean bound(int i, double[] to) {
+    return false;
+  }
+
+  @Override
+  public void legBox(LegModel leg, double[] to) {
+    Boxes.copy(leg.capsule.getAABB(), to, 0);
+  }
+
+  @Override
   public void moved(LegModel leg) {
     // The engine keeps the order.
   }
