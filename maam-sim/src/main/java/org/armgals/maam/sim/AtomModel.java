@@ -66,16 +66,21 @@ final class AtomModel {
   double pushY;
   double pushZ;
 
+  /**
+   * The atom placed at {@code placement}, at {@code index} in the simulation's list; {@code cone}
+   * is {@code params}' (one for every atom that shares them).
+   */
   AtomModel(
       Physics physics,
       int index,
       Scene.Placement placement,
       AtomParams params,
+      Cone cone,
       LegDynamics dynamics) {
     this.index = index;
     this.id = placement.id();
     this.params = params;
-    this.cone = new Cone(params.coneHalfAngle());
+    this.cone = cone;
     this.energy = params.batteryCapacity();
     DQuaternion q = Frames.of(placement.orientation());
     Vec3 c = placement.position();

@@ -74,8 +74,8 @@ final class JointedLeg extends LegModel {
     double fmax = on ? torqueLimit : 0;
     joint.setParam(DJoint.PARAM_N.dParamFMax1, fmax);
     joint.setParam(DJoint.PARAM_N.dParamFMax2, fmax);
-    joint.setParam(DJoint.PARAM_N.dParamVel1, on ? speed(target[0] - a1, p) : 0);
-    joint.setParam(DJoint.PARAM_N.dParamVel2, on ? speed(target[1] - a2, p) : 0);
+    joint.setParam(DJoint.PARAM_N.dParamVel1, on ? speed(target1 - a1, p) : 0);
+    joint.setParam(DJoint.PARAM_N.dParamVel2, on ? speed(target2 - a2, p) : 0);
   }
 
   private static double speed(double error, AtomParams p) {

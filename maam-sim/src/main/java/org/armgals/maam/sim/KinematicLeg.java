@@ -40,7 +40,11 @@ final class KinematicLeg extends LegModel {
   private double loadX;
   private double loadY;
   private double loadZ;
-  private final double[] next = new double[2];
+
+  /** Whether {@link #pose} is that of the angles, and its turned axis 2 (which may be, alone). */
+  private boolean posed;
+
+  private boolean axis2Turned;
 
   /** Whether the capsule sits at the leg's pose on the kernel's body. */
   private boolean placed;
@@ -51,15 +55,35 @@ final class KinematicLeg extends LegModel {
     AtomParams p = atom.params;
     this.pose = new LegPose(leg, p.kernelRadius(), p.legLength());
     this.axis1 = pose.axis1;
+    // The angles start at 0: the rest pose, unworked.
     this.inertia = p.legMass() * p.legLength() * p.legLength() / 3;
+  }
+
+  /** The leg's pose, worked out for its angles if it is not yet. */
+  private LegPose pose() {
+    if (!posed) {
+      pose.pose(a1, a2);
+      posed = true;
+      axis2Turned = true;
+    }
+    return pose;
+  }
+
+  /** Axis 2 as axis 1's turn has turned it. */
+  private DVector3 turnedAxis2() {
+    if (!axis2Turned) {
+      pose.turnAxis2(a1);
+      axis2Turned = true;
+    }
+    return pose.axis2();
   }
 
   /** Places the capsule on the kernel's body at the leg's pose, if it is not there yet. */
   @Override
   void place() {
     if (!placed) {
-      capsule.setOffsetPosition(pose.centre());
-      capsule.setOffsetQuaternion(pose.local());
+      capsule.setOffsetPosition(pose().centre());
+      capsule.setOffsetQuaternion(pose().local());
       placed = true;
     }
   }
@@ -85,18 +109,25 @@ final class KinematicLeg extends LegModel {
   @Override
   void servo(boolean motorsOn, double dt) {
     boolean on = motorsOn && powered && !failed;
-    double w1 = rate(on, target[0] - a1, load1);
-    double w2 = rate(on, target[1] - a2, load2);
+    double w1 = rate(on, target1 - a1, load1);
+    double w2 = rate(on, target2 - a2, load2);
     double r1 = 0;
     double r2 = 0;
     if (w1 != 0 || w2 != 0) {
-      atom.cone.clamp(
-          settle(on, a1 + w1 * dt, target[0]), settle(on, a2 + w2 * dt, target[1]), next);
-      r1 = (next[0] - a1) / dt;
-      r2 = (next[1] - a2) / dt;
-      a1 = next[0];
-      a2 = next[1];
-      pose.set(a1, a2);
+      Cone cone = atom.cone;
+      double n1 = cone.limit(settle(on, a1 + w1 * dt, target1));
+      double n2 = cone.limit(settle(on, a2 + w2 * dt, target2));
+      double f = cone.fit(n1, n2);
+      if (f != 1) {
+        n1 *= f;
+        n2 *= f;
+      }
+      r1 = (n1 - a1) / dt;
+      r2 = (n2 - a2) / dt;
+      a1 = n1;
+      a2 = n2;
+      posed = false;
+      axis2Turned = false;
       placed = false;
       atom.parts.moved(this);
     }
@@ -117,7 +148,7 @@ final class KinematicLeg extends LegModel {
       // The torque is no larger than |k1| + |k2| (the axes are unit vectors): when that is well
       // under what wakes a resting atom, the torque need not be worked out.
       if (enabled || (Math.abs(k1) + Math.abs(k2)) * (1 + 1e-9) * dt > wakes) {
-        DVector3 turned = pose.axis2();
+        DVector3 turned = turnedAxis2();
         double tx = k1 * axis1[0] + k2 * turned.get0();
         double ty = k1 * axis1[1] + k2 * turned.get1();
         double tz = k1 * axis1[2] + k2 * turned.get2();
@@ -204,7 +235,7 @@ final class KinematicLeg extends LegModel {
     kernel.vectorFromWorld(loadX, loadY, loadZ, t);
     // Angles grow with negative turns about the axes.
     load1 = -(t.get0() * axis1[0] + t.get1() * axis1[1] + t.get2() * axis1[2]);
-    load2 = -t.dot(pose.axis2());
+    load2 = -t.dot(turnedAxis2());
     loadX = 0;
     loadY = 0;
     loadZ = 0;
@@ -222,12 +253,12 @@ final class KinematicLeg extends LegModel {
 
   /** The leg's rotation in the kernel's frame (its local z is the leg's direction). */
   DQuaternionC localRotation() {
-    return pose.local();
+    return pose().local();
   }
 
   /** The tip in the kernel's frame. */
   DVector3 localTip() {
-    return new DVector3(pose.tip());
+    return new DVector3(pose().tip());
   }
 
   /** Whether the leg turned in the last step. */
@@ -238,14 +269,14 @@ final class KinematicLeg extends LegModel {
   @Override
   DVector3 direction() {
     DVector3 d = new DVector3();
-    kernel.vectorToWorld(pose.direction(), d);
+    kernel.vectorToWorld(pose().direction(), d);
     return d;
   }
 
   @Override
   DVector3 tip() {
     DVector3 t = new DVector3();
-    kernel.getRelPointPos(pose.tip(), t);
+    kernel.getRelPointPos(pose().tip(), t);
     return t;
   }
 
@@ -264,7 +295,7 @@ final class KinematicLeg extends LegModel {
   @Override
   void velocityAt(DVector3C p, DVector3 out) {
     // The leg's angular velocity relative to the kernel, in the kernel's frame, then the world's.
-    DVector3 turned = pose.axis2();
+    DVector3 turned = turnedAxis2();
     double wx = -(rate1 * axis1[0] + rate2 * turned.get0());
     double wy = -(rate1 * axis1[1] + rate2 * turned.get1());
     double wz = -(rate1 * axis1[2] + rate2 * turned.get2());

@@ -32,6 +32,9 @@ final class KinematicParts implements Parts {
   /** Those boxes in the world, as of the kernel's pose when {@link #reachesKnown} was set. */
   private final double[] reaches;
 
+  /** The atom's box in the world, as of the same pose. */
+  private final double[] box = new double[6];
+
   private boolean reachesKnown;
 
   KinematicParts(
@@ -79,13 +82,17 @@ final class KinematicParts implements Parts {
 
   /**
    * The legs' cone boxes in the world: each box's centre placed by the kernel's pose, its half
-   * sizes summed over the turned axes, and a nanometre more for rounding. The kernel of an atom at
-   * rest does not move, so they are worked out again only when it has.
+   * sizes summed over the turned axes, and a nanometre more for rounding; and the atom's box. The
+   * kernel of an atom at rest does not move, so they are worked out again only when it has.
    */
   private double[] reaches() {
     if (!reachesKnown) {
       DVector3C p = kernel.getPosition();
       DMatrix3C r = kernel.getRotation();
+      for (int axis = 0; axis < 3; axis++) {
+        box[2 * axis] = p.get(axis) - reach;
+        box[2 * axis + 1] = p.get(axis) + reach;
+      }
       for (int l = 0; l < legs.length; l++) {
         int o = 6 * l;
         double cx = (coneBoxes[o] + coneBoxes[o + 1]) / 2;
@@ -117,13 +124,8 @@ final class KinematicParts implements Parts {
 
   @Override
   public void box(double[] to, int at) {
-    DVector3C p = kernel.getPosition();
-    to[at] = p.get0() - reach;
-    to[at + 1] = p.get0() + reach;
-    to[at + 2] = p.get1() - reach;
-    to[at + 3] = p.get1() + reach;
-    to[at + 4] = p.get2() - reach;
-    to[at + 5] = p.get2() + reach;
+    reaches();
+    System.arraycopy(box, 0, to, at, 6);
   }
 
   @Override

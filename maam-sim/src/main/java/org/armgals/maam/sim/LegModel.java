@@ -24,7 +24,11 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
   double torque1;
 
   double torque2;
-  final double[] target = new double[2];
+
+  /** The commanded angles (rad), within the cone. */
+  double target1;
+
+  double target2;
   boolean powered = true;
   double torqueLimit;
   boolean failed;
@@ -60,7 +64,10 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
   }
 
   final void setTarget(double a1, double a2) {
-    atom.cone.clamp(a1, a2, target);
+    double[] fitted = new double[2];
+    atom.cone.clamp(a1, a2, fitted);
+    target1 = fitted[0];
+    target2 = fitted[1];
     powered = true;
   }
 

@@ -7,43 +7,47 @@ package org.armgals.maam.sim;
  */
 final class PartOrder {
 
-  /** When each part last went to the front. */
-  private final long[] fronted;
+  /** The part at each position, front first, four bits each. */
+  private long order;
 
-  private final int[] order;
-  private long clock;
-  private boolean sorted;
+  private final int count;
 
   /** A bit per part: moved since the last {@link #clean()}. */
   private int dirty;
 
   /**
-   * {@code count} parts (at most 31), added in number order and all dirty, as new geometries are.
+   * {@code count} parts (at most 16), added in number order and all dirty, as new geometries are.
    */
   PartOrder(int count) {
-    if (count < 1 || count > 31) {
-      throw new IllegalArgumentException(count + " parts: expected 1 to 31");
+    if (count < 1 || count > 16) {
+      throw new IllegalArgumentException(count + " parts: expected 1 to 16");
     }
-    fronted = new long[count];
-    order = new int[count];
+    this.count = count;
     for (int p = 0; p < count; p++) {
-      fronted[p] = ++clock;
+      // Each goes in front of those before it.
+      order = order << 4 | p;
     }
     dirty = (1 << count) - 1;
   }
 
   int count() {
-    return order.length;
+    return count;
   }
 
   /** Part {@code part} moved. */
   void moved(int part) {
     int bit = 1 << part;
-    if ((dirty & bit) == 0) {
-      dirty |= bit;
-      fronted[part] = ++clock;
-      sorted = false;
+    if ((dirty & bit) != 0) {
+      return;
     }
+    dirty |= bit;
+    int at = 0;
+    while (get(at) != part) {
+      at++;
+    }
+    long before = order & ((1L << 4 * at) - 1);
+    long after = at == 15 ? 0 : order & -(1L << 4 * (at + 1));
+    order = after | before << 4 | part;
   }
 
   /** The space was cleaned. */
@@ -53,23 +57,6 @@ final class PartOrder {
 
   /** The part at position {@code i} of the list, the front at 0. */
   int get(int i) {
-    if (!sorted) {
-      sort();
-    }
-    return order[i];
-  }
-
-  private void sort() {
-    // Insertion sort, latest to the front: a handful of parts, mostly in order already.
-    for (int i = 0; i < order.length; i++) {
-      int p = i;
-      int j = i;
-      while (j > 0 && fronted[order[j - 1]] < fronted[p]) {
-        order[j] = order[j - 1];
-        j--;
-      }
-      order[j] = p;
-    }
-    sorted = true;
+    return (int) (order >>> 4 * i) & 15;
   }
 }

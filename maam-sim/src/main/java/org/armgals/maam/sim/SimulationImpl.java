@@ -49,10 +49,11 @@ final class SimulationImpl implements Simulation {
     this.messages = new MessageBus(b.seed, b.messageDelayNanos, b.packetLoss);
     this.physics = new Physics(scene, b.seed);
     this.tips = new TipMatcher(scene.params());
+    Cone cone = new Cone(scene.params().coneHalfAngle());
     List<Scene.Placement> placements = new ArrayList<>(scene.atoms());
     placements.sort(Comparator.comparingInt(Scene.Placement::id));
     for (Scene.Placement p : placements) {
-      AtomModel atom = new AtomModel(physics, atoms.size(), p, scene.params(), b.legDynamics);
+      AtomModel atom = new AtomModel(physics, atoms.size(), p, scene.params(), cone, b.legDynamics);
       atoms.add(atom);
       physics.add(atom);
       bodies.put(p.id(), new BodyView(this, atom, sense(atom)));
