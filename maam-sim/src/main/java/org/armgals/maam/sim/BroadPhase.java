@@ -179,22 +179,30 @@ final class BroadPhase {
   }
 
   /**
-   * Calls the near callback on the rays of {@code legs} (aimed) and what their boxes overlap, but
-   * their own atoms: the sensing pass.
+   * Calls the near callback on the {@link LegModel#aimed aimed} rays of {@code atoms}' legs and
+   * what their boxes overlap, but their own atoms: the sensing pass.
    */
-  void castRays(List<LegModel> legs) {
+  void castRays(List<AtomModel> atoms) {
     clean();
-    for (LegModel leg : legs) {
-      DRay ray = leg.ray;
-      Boxes.copy(ray.getAABB(), rayBox, 0);
-      for (int g = 0; g < ground.geoms.size(); g++) {
-        if (ground.overlaps(g, rayBox, 0)) {
-          near.call(null, ray, ground.geoms.get(g));
+    for (AtomModel atom : atoms) {
+      for (LegModel leg : atom.legs) {
+        if (leg.aimed) {
+          castRay(leg);
         }
       }
-      casting = leg;
-      grid.forEachOverlapping(rayBox, rayNear);
     }
+  }
+
+  private void castRay(LegModel leg) {
+    DRay ray = leg.ray;
+    Boxes.copy(ray.getAABB(), rayBox, 0);
+    for (int g = 0; g < ground.geoms.size(); g++) {
+      if (ground.overlaps(g, rayBox, 0)) {
+        near.call(null, ray, ground.geoms.get(g));
+      }
+    }
+    casting = leg;
+    grid.forEachOverlapping(rayBox, rayNear);
   }
 
   /** The leg whose ray is being cast, and the ray's box. */
@@ -238,18 +246,18 @@ final class BroadPhase {
       if (leg.binding != null) {
         return false;
       }
-      if (leg.movesOnItsCarrier()) {
-        atom.parts.legBox(leg, box);
-        if (ground.touches(box, 0)) {
-          leg.place();
-          Boxes.copy(leg.capsule.getAABB(), box, 0);
-          if (ground.touches(box, 0)) {
-            return false;
-          }
-        }
+      if (leg.movesOnItsCarrier()
+          && atom.parts.legMayTouch(leg, ground)
+          && ground.touches(placed(leg).getAABB())) {
+        return false;
       }
     }
     return true;
+  }
+
+  private static DGeom placed(LegModel leg) {
+    leg.place();
+    return leg.capsule;
   }
 
   void destroy() {

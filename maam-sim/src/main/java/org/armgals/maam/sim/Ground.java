@@ -3,6 +3,7 @@ package org.armgals.maam.sim;
 import java.util.ArrayList;
 import java.util.List;
 import org.ode4j.math.DMatrix3;
+import org.ode4j.ode.DAABBC;
 import org.ode4j.ode.DBox;
 import org.ode4j.ode.DGeom;
 import org.ode4j.ode.DRotation;
@@ -92,6 +93,22 @@ final class Ground {
   boolean touches(double[] box, int at) {
     for (int i = 0; i < geoms.size(); i++) {
       if (overlaps(i, box, at)) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /** Whether the engine's box {@code box} overlaps any of the geometries' boxes. */
+  boolean touches(DAABBC box) {
+    for (int i = 0; i < geoms.size(); i++) {
+      int o = 6 * i;
+      if (box.getMin0() <= boxes[o + 1]
+          && boxes[o] <= box.getMax0()
+          && box.getMin1() <= boxes[o + 3]
+          && boxes[o + 2] <= box.getMax1()
+          && box.getMin2() <= boxes[o + 5]
+          && boxes[o + 4] <= box.getMax2()) {
         return true;
       }
     }

@@ -76,8 +76,8 @@ final class KinematicParts implements Parts {
   }
 
   @Override
-  public void legBox(LegModel leg, double[] to) {
-    System.arraycopy(reaches(), 6 * leg.leg.ordinal(), to, 0, 6);
+  public boolean legMayTouch(LegModel leg, Ground ground) {
+    return ground.touches(reaches(), 6 * leg.leg.ordinal());
   }
 
   /**

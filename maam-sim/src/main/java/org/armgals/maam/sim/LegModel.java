@@ -52,6 +52,9 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
 
   double proximity;
 
+  /** The ray is aimed, to be cast in this cycle's sensing pass. */
+  boolean aimed;
+
   /** Where the ray was last aimed from (the tip) and along (the leg's direction). */
   final double[] aim = new double[6];
 

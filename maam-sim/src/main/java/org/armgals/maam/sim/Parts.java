@@ -29,8 +29,11 @@ sealed interface Parts permits SpaceParts, KinematicParts {
    */
   boolean bound(int i, double[] to);
 
-  /** Writes a box that holds {@code leg}'s capsule into {@code to} at 0, without placing it. */
-  void legBox(LegModel leg, double[] to);
+  /**
+   * Whether {@code leg}'s capsule may touch the ground or an obstacle, told from a box that holds
+   * it without placing it; true when in doubt.
+   */
+  boolean legMayTouch(LegModel leg, Ground ground);
 
   /** {@code leg}'s capsule moved on its body (its engine geometry would have been marked). */
   void moved(LegModel leg);

@@ -104,13 +104,13 @@ final class Physics {
   }
 
   /**
-   * Casts the proximity rays of {@code legs} (aimed) against everything but their own atoms: the
-   * sensing pass at the start of a control cycle.
+   * Casts the {@link LegModel#aimed aimed} proximity rays of {@code atoms}' legs against everything
+   * but their own atoms: the sensing pass at the start of a control cycle.
    */
-  void castRays(List<LegModel> legs) {
+  void castRays(List<AtomModel> atoms) {
     ENGINE.lock();
     try {
-      broadPhase.castRays(legs);
+      broadPhase.castRays(atoms);
     } finally {
       ENGINE.unlock();
     }

@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalInt;
 import java.util.TreeMap;
+import java.util.function.IntConsumer;
 import org.armgals.maam.sim.spi.Controller;
 import org.armgals.maam.sim.spi.Pacer;
 import org.armgals.maam.spi.Body;
@@ -19,6 +20,10 @@ final class SimulationImpl implements Simulation {
 
   private final Scene scene;
   private final Physics physics;
+
+  /** The threads each pass over the atoms is spread over. */
+  private final Lanes lanes;
+
   private final TreeMap<Integer, BodyView> bodies = new TreeMap<>();
   private final List<AtomModel> atoms = new ArrayList<>();
   private final Map<Integer, Controller> controllers = new HashMap<>();
@@ -31,9 +36,6 @@ final class SimulationImpl implements Simulation {
   private final int stepsPerCycle;
   private final double dt;
   private final List<SimEvent> events = new ArrayList<>();
-
-  /** The legs whose rays are cast in this cycle's sensing pass. */
-  private final List<LegModel> sensing = new ArrayList<>();
 
   private List<SimEvent> lastEvents = List.of();
   private long cycle;
@@ -48,6 +50,7 @@ final class SimulationImpl implements Simulation {
     this.pacer = b.pacer;
     this.messages = new MessageBus(b.seed, b.messageDelayNanos, b.packetLoss);
     this.physics = new Physics(scene, b.seed);
+    this.lanes = new Lanes(b.threads, "maam-sim-" + scene.name());
     this.tips = new TipMatcher(scene.params());
     Cone cone = new Cone(scene.params().coneHalfAngle());
     List<Scene.Placement> placements = new ArrayList<>(scene.atoms());
@@ -56,6 +59,7 @@ final class SimulationImpl implements Simulation {
       AtomModel atom = new AtomModel(physics, atoms.size(), p, scene.params(), cone, b.legDynamics);
       atoms.add(atom);
       physics.add(atom);
+      emptied = new boolean[atoms.size()];
       bodies.put(p.id(), new BodyView(this, atom, sense(atom)));
       Controller c = b.controllerById.get(p.id());
       controllers.put(p.id(), c != null ? c : b.controllers.apply(p.id()));
@@ -176,43 +180,29 @@ final class SimulationImpl implements Simulation {
   }
 
   /**
-   * One physics step. Each pass over the atoms does all it can for an atom at once: with a thousand
-   * atoms, each pass reads them from memory afresh.
+   * One physics step. Each pass over the atoms does all it can for an atom at once (with a thousand
+   * atoms, each pass reads them from memory afresh), on the {@link Lanes}; what must go in order
+   * (bindings, contacts, the solver, events) goes on this thread between passes.
    */
   private void physicsStep() {
     // Bindings re-fix their joints after both legs' servos and before collisions.
-    boolean follow = !bindings.isEmpty();
-    for (int i = 0; i < atoms.size(); i++) {
-      AtomModel atom = atoms.get(i);
-      if (atom.pushX != 0 || atom.pushY != 0 || atom.pushZ != 0) {
-        atom.kernel.enable();
-        atom.kernel.addForce(atom.pushX, atom.pushY, atom.pushZ);
-      }
-      boolean on = atom.motorsOn();
-      for (LegModel leg : atom.legs) {
-        leg.servo(on, dt);
-      }
-      if (!follow) {
-        physics.prepare(atom);
-      }
-    }
-    if (follow) {
+    following = !bindings.isEmpty();
+    lanes.forEach(atoms.size(), servoPass);
+    if (following) {
       for (Binding binding : bindings) {
         binding.follow();
       }
-      for (int i = 0; i < atoms.size(); i++) {
-        physics.prepare(atoms.get(i));
-      }
+      lanes.forEach(atoms.size(), preparePass);
     }
     physics.step(dt);
     for (Binding binding : bindings) {
       binding.loadLegs();
     }
     timeNanos += stepNanos;
-    for (AtomModel atom : atoms) {
-      atom.stepped();
-      if (atom.drain(dt)) {
-        events.add(new SimEvent.BatteryEmpty(timeNanos, atom.id));
+    lanes.forEach(atoms.size(), drainPass);
+    for (int i = 0; i < atoms.size(); i++) {
+      if (emptied[i]) {
+        events.add(new SimEvent.BatteryEmpty(timeNanos, atoms.get(i).id));
       }
     }
     for (int i = 0; i < bindings.size(); i++) {
@@ -235,27 +225,70 @@ final class SimulationImpl implements Simulation {
     }
   }
 
+  private boolean following;
+  private boolean[] emptied = new boolean[0];
+  private final IntConsumer servoPass = this::servo;
+  private final IntConsumer preparePass = this::prepare;
+  private final IntConsumer drainPass = this::drain;
+  private final IntConsumer aimPass = this::aim;
+  private final IntConsumer sensePass = this::sense;
+
+  /** Atom {@code i}'s push and servos, and (unless bindings follow first) its preparation. */
+  private void servo(int i) {
+    AtomModel atom = atoms.get(i);
+    if (atom.pushX != 0 || atom.pushY != 0 || atom.pushZ != 0) {
+      atom.kernel.enable();
+      atom.kernel.addForce(atom.pushX, atom.pushY, atom.pushZ);
+    }
+    boolean on = atom.motorsOn();
+    for (LegModel leg : atom.legs) {
+      leg.servo(on, dt);
+    }
+    if (!following) {
+      physics.prepare(atom);
+    }
+  }
+
+  private void prepare(int i) {
+    physics.prepare(atoms.get(i));
+  }
+
+  /** After the engine's step: atom {@code i}'s parts, legs and battery. */
+  private void drain(int i) {
+    AtomModel atom = atoms.get(i);
+    atom.stepped();
+    emptied[i] = atom.drain(dt);
+  }
+
   private void senseAll() {
-    sensing.clear();
-    for (AtomModel atom : atoms) {
-      for (LegModel leg : atom.legs) {
-        if (atom.failed || leg.failed) {
-          continue;
-        }
-        if (leg.binding != null) {
-          leg.proximity = 0;
-        } else {
-          leg.aimRay();
-          sensing.add(leg);
-        }
+    lanes.forEach(atoms.size(), aimPass);
+    physics.castRays(atoms);
+    lanes.forEach(atoms.size(), sensePass);
+  }
+
+  /** Aims atom {@code i}'s proximity rays, but those of failed or bound legs. */
+  private void aim(int i) {
+    AtomModel atom = atoms.get(i);
+    for (LegModel leg : atom.legs) {
+      leg.aimed = false;
+      if (atom.failed || leg.failed) {
+        continue;
+      }
+      if (leg.binding != null) {
+        leg.proximity = 0;
+      } else {
+        leg.aimRay();
+        leg.aimed = true;
       }
     }
-    physics.castRays(sensing);
-    for (AtomModel atom : atoms) {
-      bodies.get(atom.id).sensors = sense(atom);
-      for (LegModel leg : atom.legs) {
-        leg.contact = false;
-      }
+  }
+
+  /** Reads atom {@code i}'s sensors, and starts its tips' contacts of the next period afresh. */
+  private void sense(int i) {
+    AtomModel atom = atoms.get(i);
+    bodies.get(atom.id).sensors = sense(atom);
+    for (LegModel leg : atom.legs) {
+      leg.contact = false;
     }
   }
 
@@ -376,6 +409,7 @@ final class SimulationImpl implements Simulation {
       return;
     }
     closed = true;
+    lanes.close();
     if (trace != null) {
       trace.flush();
     }

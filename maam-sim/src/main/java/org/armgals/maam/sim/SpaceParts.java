@@ -47,8 +47,8 @@ final class SpaceParts implements Parts {
   }
 
   @Override
-  public void legBox(LegModel leg, double[] to) {
-    Boxes.copy(leg.capsule.getAABB(), to, 0);
+  public boolean legMayTouch(LegModel leg, Ground ground) {
+    return true;
   }
 
   @Override
