@@ -1,9 +1,7 @@
 package org.armgals.maam.sim;
 
 import java.util.ArrayList;
-import java.util.EnumMap;
 import java.util.List;
-import java.util.Map;
 import org.armgals.maam.spi.Leg;
 import org.ode4j.math.DMatrix3;
 import org.ode4j.math.DQuaternion;
@@ -32,10 +30,15 @@ final class AtomModel {
   final Cone cone;
 
   final DBody kernel;
-  final Map<Leg, LegModel> legs = new EnumMap<>(Leg.class);
 
-  /** The space of the atom's proximity rays: enabled only while the sensors are read. */
-  final DSpace rays;
+  /** The legs, in the order of {@link Leg}. */
+  final LegModel[] legs = new LegModel[Leg.values().length];
+
+  /**
+   * The atom's kernel and leg capsules as the broad phase sees them; they are never tested against
+   * each other.
+   */
+  final Parts parts;
 
   /** The kernel's up axis at the start, in the kernel's frame: what tilt is measured from. */
   private final DVector3 upLocal;
@@ -49,6 +52,9 @@ final class AtomModel {
    */
   boolean still;
 
+  /** The atom's place in the simulation's list (and the broad phase's), in id order. */
+  final int index;
+
   double energy;
   boolean failed;
   boolean emptyReported;
@@ -60,10 +66,21 @@ final class AtomModel {
   double pushY;
   double pushZ;
 
-  AtomModel(Physics physics, Scene.Placement placement, AtomParams params, LegDynamics dynamics) {
+  /**
+   * The atom placed at {@code placement}, at {@code index} in the simulation's list; {@code cone}
+   * is {@code params}' (one for every atom that shares them).
+   */
+  AtomModel(
+      Physics physics,
+      int index,
+      Scene.Placement placement,
+      AtomParams params,
+      Cone cone,
+      LegDynamics dynamics) {
+    this.index = index;
     this.id = placement.id();
     this.params = params;
-    this.cone = new Cone(params.coneHalfAngle());
+    this.cone = cone;
     this.energy = params.batteryCapacity();
     DQuaternion q = Frames.of(placement.orientation());
     Vec3 c = placement.position();
@@ -73,24 +90,19 @@ final class AtomModel {
     kernel = OdeHelper.createBody(physics.world);
     kernel.setPosition(c.x(), c.y(), c.z());
     kernel.setQuaternion(q);
-    // The atom's own geometry in a space of its own: the world's space sees one thing per atom,
-    // and an atom's parts are never tested against each other.
-    DSpace parts = OdeHelper.createSimpleSpace(physics.space);
-    parts.setData(new GeomTag(GeomTag.Kind.ATOM, this, null));
-    DSphere sphere = OdeHelper.createSphere(parts, params.kernelRadius());
+    // Jointed legs' parts in a space of the engine's, which keeps their order; kinematic legs'
+    // parts in none (KinematicParts keeps it).
+    DSpace space = dynamics == LegDynamics.JOINTED ? OdeHelper.createSimpleSpace() : null;
+    DSphere sphere = OdeHelper.createSphere(space, params.kernelRadius());
     sphere.setBody(kernel);
     sphere.setData(new GeomTag(GeomTag.Kind.KERNEL, this, null));
     DMass mass = OdeHelper.createMass();
     mass.setSphereTotal(params.kernelMass(), params.kernelRadius());
     double cylinder = params.legLength() - 2 * params.legRadius();
-    // The proximity rays in a space of their own too, enabled only while the sensors are read.
-    rays = OdeHelper.createSimpleSpace(physics.space);
-    rays.setData(new GeomTag(GeomTag.Kind.RAYS, this, null));
-    rays.disable();
     for (Leg leg : Leg.values()) {
-      DRay ray = OdeHelper.createRay(rays, params.proximityRange());
-      ray.disable();
-      DCapsule capsule = OdeHelper.createCapsule(parts, params.legRadius(), cylinder);
+      // A proximity ray, in no space: cast only while the sensors are read.
+      DRay ray = OdeHelper.createRay(null, params.proximityRange());
+      DCapsule capsule = OdeHelper.createCapsule(space, params.legRadius(), cylinder);
       LegModel model =
           switch (dynamics) {
             case JOINTED -> jointedLeg(physics, leg, q, c, capsule, ray);
@@ -104,7 +116,16 @@ final class AtomModel {
       model.proximity = params.proximityRange();
       capsule.setData(new GeomTag(GeomTag.Kind.LEG, this, model));
       ray.setData(new GeomTag(GeomTag.Kind.RAY, this, model));
-      legs.put(leg, model);
+      legs[leg.ordinal()] = model;
+    }
+    if (space != null) {
+      parts = new SpaceParts(space, legs.length + 1);
+    } else {
+      KinematicLeg[] kinematic = new KinematicLeg[legs.length];
+      for (LegModel leg : legs) {
+        kinematic[leg.leg.ordinal()] = (KinematicLeg) leg;
+      }
+      parts = new KinematicParts(kernel, sphere, params.kernelRadius(), kinematic, params.reach());
     }
     // The legs sit symmetrically, so the centre of mass is the kernel's centre up to rounding; the
     // engine wants it exactly there.
@@ -155,29 +176,37 @@ final class AtomModel {
     double[] a2 = Frames.axis2(leg);
     joint.setAxis1(Frames.rotate(q, a1[0], a1[1], a1[2]));
     joint.setAxis2(Frames.rotate(q, a2[0], a2[1], a2[2]));
-    return new JointedLeg(this, leg, body, joint, ray);
+    return new JointedLeg(this, leg, body, joint, capsule, ray);
   }
 
   /**
    * Before the step's collisions: decides whether the atom is {@link #still}; a still atom's tips
-   * keep touching what they touched, a moving atom's are found again.
+   * keep touching what they touched, a moving atom's are found again (those with the ground and
+   * obstacles as {@link Physics} decides).
    */
   void beforeCollisions() {
     still = !kernel.isEnabled();
-    for (LegModel leg : legs.values()) {
+    for (LegModel leg : legs) {
       still &= !leg.movesOnItsCarrier();
     }
-    for (LegModel leg : legs.values()) {
+    for (LegModel leg : legs) {
       if (still) {
-        leg.contact |= leg.touching;
+        leg.contact |= leg.touchingAtom | leg.touchingGround;
       } else {
-        leg.touching = false;
+        leg.touchingAtom = false;
       }
     }
   }
 
+  /** After the engine's step: a body it stepped has moved its parts. */
+  void stepped() {
+    if (kernel.isEnabled()) {
+      parts.bodyMoved();
+    }
+  }
+
   LegModel leg(Leg leg) {
-    return legs.get(leg);
+    return legs[leg.ordinal()];
   }
 
   boolean motorsOn() {
@@ -207,14 +236,14 @@ final class AtomModel {
    * mechanical power over their efficiency. Returns true the step it runs empty.
    */
   boolean drain(double dt) {
-    for (LegModel leg : legs.values()) {
+    for (LegModel leg : legs) {
       leg.afterStep(dt);
     }
     if (failed || energy <= 0) {
       return false;
     }
     double power = params.idleDraw();
-    for (LegModel leg : legs.values()) {
+    for (LegModel leg : legs) {
       if (!leg.failed) {
         power += leg.motorPower() / params.motorEfficiency();
       }

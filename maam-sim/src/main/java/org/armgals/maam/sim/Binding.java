@@ -86,6 +86,7 @@ final class Binding {
     joint.setFixed();
     bodyB.setPosition(savedPosition);
     bodyB.setQuaternion(savedTurn);
+    kb.atom.parts.bodyMoved();
   }
 
   /**

@@ -36,18 +36,21 @@ final class Cone {
     return Math.cos(a1) * Math.cos(a2) >= cosHalf;
   }
 
+  /** {@code a} within plus or minus the half-angle. */
+  double limit(double a) {
+    return Math.max(-halfAngle, Math.min(halfAngle, a));
+  }
+
   /**
-   * {@code (a1, a2)} scaled down onto the cone's edge if it is outside, written to {@code out} (the
-   * direction of the tilt is kept; {@code out} may be the input's array).
+   * The factor that scales {@code (a1, a2)}, each {@link #limit limited}, down onto the cone's edge
+   * if it is outside; 1 if it is inside.
    */
-  void clamp(double a1, double a2, double[] out) {
-    a1 = Math.max(-halfAngle, Math.min(halfAngle, a1));
-    a2 = Math.max(-halfAngle, Math.min(halfAngle, a2));
-    // tilt <= halfAngle exactly when cos a1 · cos a2 >= cos halfAngle (no acos on the way).
-    if (inside(a1, a2)) {
-      out[0] = a1;
-      out[1] = a2;
-      return;
+  double fit(double a1, double a2) {
+    // tilt <= halfAngle exactly when cos a1 · cos a2 >= cos halfAngle (no acos on the way); and
+    // cos a1 · cos a2 >= cos(|a1| + |a2|), so angles whose magnitudes sum to less than the
+    // half-angle (a nanoradian less, for rounding) are inside without a cosine.
+    if (Math.abs(a1) + Math.abs(a2) <= halfAngle - 1e-9 || inside(a1, a2)) {
+      return 1;
     }
     double lo = 0;
     double hi = 1;
@@ -59,7 +62,18 @@ final class Cone {
         hi = mid;
       }
     }
-    out[0] = a1 * lo;
-    out[1] = a2 * lo;
+    return lo;
+  }
+
+  /**
+   * {@code (a1, a2)} scaled down onto the cone's edge if it is outside, written to {@code out} (the
+   * direction of the tilt is kept; {@code out} may be the input's array).
+   */
+  void clamp(double a1, double a2, double[] out) {
+    a1 = limit(a1);
+    a2 = limit(a2);
+    double f = fit(a1, a2);
+    out[0] = f == 1 ? a1 : a1 * f;
+    out[1] = f == 1 ? a2 : a2 * f;
   }
 }

@@ -4,6 +4,7 @@ import org.armgals.maam.spi.Leg;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
 import org.ode4j.ode.DBody;
+import org.ode4j.ode.DCapsule;
 import org.ode4j.ode.DJoint;
 import org.ode4j.ode.DJoint.DJointFeedback;
 import org.ode4j.ode.DRay;
@@ -23,8 +24,9 @@ final class JointedLeg extends LegModel {
   private double rate1;
   private double rate2;
 
-  JointedLeg(AtomModel atom, Leg leg, DBody body, DUniversalJoint joint, DRay ray) {
-    super(atom, leg, ray);
+  JointedLeg(
+      AtomModel atom, Leg leg, DBody body, DUniversalJoint joint, DCapsule capsule, DRay ray) {
+    super(atom, leg, capsule, ray);
     this.body = body;
     this.joint = joint;
     joint.setFeedback(feedback);
@@ -72,8 +74,8 @@ final class JointedLeg extends LegModel {
     double fmax = on ? torqueLimit : 0;
     joint.setParam(DJoint.PARAM_N.dParamFMax1, fmax);
     joint.setParam(DJoint.PARAM_N.dParamFMax2, fmax);
-    joint.setParam(DJoint.PARAM_N.dParamVel1, on ? speed(target[0] - a1, p) : 0);
-    joint.setParam(DJoint.PARAM_N.dParamVel2, on ? speed(target[1] - a2, p) : 0);
+    joint.setParam(DJoint.PARAM_N.dParamVel1, on ? speed(target1 - a1, p) : 0);
+    joint.setParam(DJoint.PARAM_N.dParamVel2, on ? speed(target2 - a2, p) : 0);
   }
 
   private static double speed(double error, AtomParams p) {

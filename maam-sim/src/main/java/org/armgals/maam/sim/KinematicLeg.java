@@ -1,7 +1,6 @@
 package org.armgals.maam.sim;
 
 import org.armgals.maam.spi.Leg;
-import org.ode4j.math.DQuaternion;
 import org.ode4j.math.DQuaternionC;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
@@ -24,13 +23,10 @@ import org.ode4j.ode.DRay;
 final class KinematicLeg extends LegModel {
 
   private final DBody kernel;
-  private final DCapsule capsule;
   private final double[] axis1;
-  private final double[] axis2;
-  private final DQuaternion rest;
-  private final double[] restDirection;
-  private final double radius;
-  private final double length;
+
+  /** Where the leg is on the kernel, at its angles. */
+  private final LegPose pose;
 
   /** The leg's moment of inertia about its pivot (kg·m²), as a rod. */
   private final double inertia;
@@ -44,47 +40,60 @@ final class KinematicLeg extends LegModel {
   private double loadX;
   private double loadY;
   private double loadZ;
-  private final double[] next = new double[2];
-  private DQuaternion local = new DQuaternion(1, 0, 0, 0);
-  private DVector3 localDirection = new DVector3();
-  private final DVector3 localTip = new DVector3();
-  private DVector3 localAxis2 = new DVector3();
+
+  /** Whether {@link #pose} is that of the angles, and its turned axis 2 (which may be, alone). */
+  private boolean posed;
+
+  private boolean axis2Turned;
+
+  /** Whether the capsule sits at the leg's pose on the kernel's body. */
+  private boolean placed;
 
   KinematicLeg(AtomModel atom, Leg leg, DBody kernel, DCapsule capsule, DRay ray) {
-    super(atom, leg, ray);
+    super(atom, leg, capsule, ray);
     this.kernel = kernel;
-    this.capsule = capsule;
-    this.axis1 = Frames.axis1(leg);
-    this.axis2 = Frames.axis2(leg);
-    this.rest = Frames.zOnto(leg);
-    this.restDirection = new double[] {leg.x(), leg.y(), leg.z()};
     AtomParams p = atom.params;
-    this.radius = p.kernelRadius();
-    this.length = p.legLength();
-    this.inertia = p.legMass() * length * length / 3;
-    place();
+    this.pose = new LegPose(leg, p.kernelRadius(), p.legLength());
+    this.axis1 = pose.axis1;
+    // The angles start at 0: the rest pose, unworked.
+    this.inertia = p.legMass() * p.legLength() * p.legLength() / 3;
+  }
+
+  /** The leg's pose, worked out for its angles if it is not yet. */
+  private LegPose pose() {
+    if (!posed) {
+      pose.pose(a1, a2);
+      posed = true;
+      axis2Turned = true;
+    }
+    return pose;
+  }
+
+  /** Axis 2 as axis 1's turn has turned it. */
+  private DVector3 turnedAxis2() {
+    if (!axis2Turned) {
+      pose.turnAxis2(a1);
+      axis2Turned = true;
+    }
+    return pose.axis2();
+  }
+
+  /** Places the capsule on the kernel's body at the leg's pose, if it is not there yet. */
+  @Override
+  void place() {
+    if (!placed) {
+      capsule.setOffsetPosition(pose().centre());
+      capsule.setOffsetQuaternion(pose().local());
+      placed = true;
+    }
   }
 
   /**
-   * Places the capsule at the current angles. The joint turns the leg by {@code -a1} about axis 1
-   * (fixed on the kernel), then by {@code -a2} about axis 2 (fixed on the leg): the engine's
-   * universal joint's convention, which the jointed model reads.
+   * Writes a box in the kernel's frame that holds the capsule wherever it turns in its cone (see
+   * {@link LegPose#coneBox}).
    */
-  private void place() {
-    DQuaternion turn1 = Frames.about(axis1, -a1);
-    local = Frames.multiply(Frames.multiply(turn1, Frames.about(axis2, -a2)), rest);
-    localDirection = Frames.rotate(local, 0, 0, 1);
-    localAxis2 = Frames.rotate(turn1, axis2[0], axis2[1], axis2[2]);
-    double half = length / 2;
-    capsule.setOffsetPosition(
-        restDirection[0] * radius + localDirection.get0() * half,
-        restDirection[1] * radius + localDirection.get1() * half,
-        restDirection[2] * radius + localDirection.get2() * half);
-    capsule.setOffsetQuaternion(local);
-    localTip.set(
-        restDirection[0] * radius + localDirection.get0() * length,
-        restDirection[1] * radius + localDirection.get1() * length,
-        restDirection[2] * radius + localDirection.get2() * length);
+  void coneBox(double[] to) {
+    pose.coneBox(atom.params.coneHalfAngle(), atom.params.legRadius(), to);
   }
 
   @Override
@@ -100,17 +109,27 @@ final class KinematicLeg extends LegModel {
   @Override
   void servo(boolean motorsOn, double dt) {
     boolean on = motorsOn && powered && !failed;
-    double w1 = rate(on, target[0] - a1, load1);
-    double w2 = rate(on, target[1] - a2, load2);
+    double w1 = rate(on, target1 - a1, load1);
+    double w2 = rate(on, target2 - a2, load2);
     double r1 = 0;
     double r2 = 0;
     if (w1 != 0 || w2 != 0) {
-      atom.cone.clamp(a1 + w1 * dt, a2 + w2 * dt, next);
-      r1 = (next[0] - a1) / dt;
-      r2 = (next[1] - a2) / dt;
-      a1 = next[0];
-      a2 = next[1];
-      place();
+      Cone cone = atom.cone;
+      double n1 = cone.limit(settle(on, a1 + w1 * dt, target1));
+      double n2 = cone.limit(settle(on, a2 + w2 * dt, target2));
+      double f = cone.fit(n1, n2);
+      if (f != 1) {
+        n1 *= f;
+        n2 *= f;
+      }
+      r1 = (n1 - a1) / dt;
+      r2 = (n2 - a2) / dt;
+      a1 = n1;
+      a2 = n2;
+      posed = false;
+      axis2Turned = false;
+      placed = false;
+      atom.parts.moved(this);
     }
     double accel1 = (r1 - rate1) / dt;
     double accel2 = (r2 - rate2) / dt;
@@ -124,21 +143,41 @@ final class KinematicLeg extends LegModel {
       // the body's, so nothing else would turn it back).
       double k1 = inertia * accel1;
       double k2 = inertia * accel2;
-      double tx = k1 * axis1[0] + k2 * localAxis2.get0();
-      double ty = k1 * axis1[1] + k2 * localAxis2.get1();
-      double tz = k1 * axis1[2] + k2 * localAxis2.get2();
-      if (!kernel.isEnabled()
-          && Math.sqrt(tx * tx + ty * ty + tz * tz) * dt
-              > Physics.REST_ANGULAR * atom.turnInertia) {
-        // A reaction that would turn the resting atom faster than rest allows wakes it; a smaller
-        // one is taken by what it rests on.
-        kernel.enable();
-      }
-      if (kernel.isEnabled()) {
-        kernel.addRelTorque(tx, ty, tz);
+      double wakes = Physics.REST_ANGULAR * atom.turnInertia;
+      boolean enabled = kernel.isEnabled();
+      // The torque is no larger than |k1| + |k2| (the axes are unit vectors): when that is well
+      // under what wakes a resting atom, the torque need not be worked out.
+      if (enabled || (Math.abs(k1) + Math.abs(k2)) * (1 + 1e-9) * dt > wakes) {
+        DVector3 turned = turnedAxis2();
+        double tx = k1 * axis1[0] + k2 * turned.get0();
+        double ty = k1 * axis1[1] + k2 * turned.get1();
+        double tz = k1 * axis1[2] + k2 * turned.get2();
+        if (!enabled && Math.sqrt(tx * tx + ty * ty + tz * tz) * dt > wakes) {
+          // A reaction that would turn the resting atom faster than rest allows wakes it; a
+          // smaller one is taken by what it rests on.
+          kernel.enable();
+        }
+        if (kernel.isEnabled()) {
+          kernel.addRelTorque(tx, ty, tz);
+        }
       }
     }
   }
+
+  /**
+   * An axis that comes within {@link #SETTLED} of its target is at it: the servo's error shrinks by
+   * a constant factor each step and would never reach zero, keeping the leg turning (and its atom
+   * awake) for ever.
+   */
+  private static double settle(boolean on, double angle, double target) {
+    return on && Math.abs(angle - target) <= SETTLED ? target : angle;
+  }
+
+  /**
+   * The servo's resolution (rad): a microradian, a thousandth of a real servo's, moves the tip by a
+   * tenth of a micrometre.
+   */
+  static final double SETTLED = 1e-6;
 
   /**
    * The speed an axis turns at (rad/s): the servo's, unless the load exceeds what the motor can
@@ -196,7 +235,7 @@ final class KinematicLeg extends LegModel {
     kernel.vectorFromWorld(loadX, loadY, loadZ, t);
     // Angles grow with negative turns about the axes.
     load1 = -(t.get0() * axis1[0] + t.get1() * axis1[1] + t.get2() * axis1[2]);
-    load2 = -t.dot(localAxis2);
+    load2 = -t.dot(turnedAxis2());
     loadX = 0;
     loadY = 0;
     loadZ = 0;
@@ -214,12 +253,12 @@ final class KinematicLeg extends LegModel {
 
   /** The leg's rotation in the kernel's frame (its local z is the leg's direction). */
   DQuaternionC localRotation() {
-    return local;
+    return pose().local();
   }
 
   /** The tip in the kernel's frame. */
   DVector3 localTip() {
-    return new DVector3(localTip);
+    return new DVector3(pose().tip());
   }
 
   /** Whether the leg turned in the last step. */
@@ -230,22 +269,21 @@ final class KinematicLeg extends LegModel {
   @Override
   DVector3 direction() {
     DVector3 d = new DVector3();
-    kernel.vectorToWorld(localDirection, d);
+    kernel.vectorToWorld(pose().direction(), d);
     return d;
   }
 
   @Override
   DVector3 tip() {
     DVector3 t = new DVector3();
-    kernel.getRelPointPos(localTip, t);
+    kernel.getRelPointPos(pose().tip(), t);
     return t;
   }
 
   @Override
   DVector3 pivot() {
     DVector3 p = new DVector3();
-    kernel.getRelPointPos(
-        restDirection[0] * radius, restDirection[1] * radius, restDirection[2] * radius, p);
+    kernel.getRelPointPos(pose.pivot(0), pose.pivot(1), pose.pivot(2), p);
     return p;
   }
 
@@ -257,9 +295,10 @@ final class KinematicLeg extends LegModel {
   @Override
   void velocityAt(DVector3C p, DVector3 out) {
     // The leg's angular velocity relative to the kernel, in the kernel's frame, then the world's.
-    double wx = -(rate1 * axis1[0] + rate2 * localAxis2.get0());
-    double wy = -(rate1 * axis1[1] + rate2 * localAxis2.get1());
-    double wz = -(rate1 * axis1[2] + rate2 * localAxis2.get2());
+    DVector3 turned = turnedAxis2();
+    double wx = -(rate1 * axis1[0] + rate2 * turned.get0());
+    double wy = -(rate1 * axis1[1] + rate2 * turned.get1());
+    double wz = -(rate1 * axis1[2] + rate2 * turned.get2());
     DVector3 w = new DVector3();
     kernel.vectorToWorld(wx, wy, wz, w);
     DVector3 r = new DVector3(p).sub(pivot());

@@ -5,6 +5,7 @@ import org.jspecify.annotations.Nullable;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
 import org.ode4j.ode.DBody;
+import org.ode4j.ode.DCapsule;
 import org.ode4j.ode.DRay;
 
 /**
@@ -16,13 +17,18 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
 
   final AtomModel atom;
   final Leg leg;
+  final DCapsule capsule;
   final DRay ray;
 
   /** The torques the motors applied to the leg about its two axes in the last step (N·m). */
   double torque1;
 
   double torque2;
-  final double[] target = new double[2];
+
+  /** The commanded angles (rad), within the cone. */
+  double target1;
+
+  double target2;
   boolean powered = true;
   double torqueLimit;
   boolean failed;
@@ -32,20 +38,39 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
   /** The tip touched something during the current control period. */
   boolean contact;
 
-  /** The tip touched something in the last step whose collisions were computed for its atom. */
-  boolean touching;
+  /**
+   * The tip touched another atom in the last step whose collisions with other atoms were computed
+   * for its atom.
+   */
+  boolean touchingAtom;
+
+  /**
+   * The tip touched the ground or an obstacle in the last step whose collisions with them were
+   * computed for its atom.
+   */
+  boolean touchingGround;
 
   double proximity;
 
-  LegModel(AtomModel atom, Leg leg, DRay ray) {
+  /** The ray is aimed, to be cast in this cycle's sensing pass. */
+  boolean aimed;
+
+  /** Where the ray was last aimed from (the tip) and along (the leg's direction). */
+  final double[] aim = new double[6];
+
+  LegModel(AtomModel atom, Leg leg, DCapsule capsule, DRay ray) {
     this.atom = atom;
     this.leg = leg;
+    this.capsule = capsule;
     this.ray = ray;
     this.torqueLimit = atom.params.maxTorque();
   }
 
   final void setTarget(double a1, double a2) {
-    atom.cone.clamp(a1, a2, target);
+    double[] fitted = new double[2];
+    atom.cone.clamp(a1, a2, fitted);
+    target1 = fitted[0];
+    target2 = fitted[1];
     powered = true;
   }
 
@@ -95,10 +120,19 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
   /** The leg's pivot on the kernel's surface, in the world. */
   abstract DVector3 pivot();
 
+  /** Puts the capsule where the leg is, for a collision. */
+  void place() {}
+
   /** Places the proximity ray at the tip, pointing along the leg. */
   final void aimRay() {
     DVector3 d = direction();
     DVector3 tip = tip();
+    aim[0] = tip.get0();
+    aim[1] = tip.get1();
+    aim[2] = tip.get2();
+    aim[3] = d.get0();
+    aim[4] = d.get1();
+    aim[5] = d.get2();
     ray.set(tip, d);
     ray.setLength(atom.params.proximityRange());
     proximity = atom.params.proximityRange();

@@ -4,11 +4,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.locks.ReentrantLock;
 import org.jspecify.annotations.Nullable;
-import org.ode4j.math.DMatrix3;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
 import org.ode4j.ode.DBody;
-import org.ode4j.ode.DBox;
 import org.ode4j.ode.DContact;
 import org.ode4j.ode.DContactBuffer;
 import org.ode4j.ode.DContactJoint;
@@ -16,8 +14,6 @@ import org.ode4j.ode.DGeom;
 import org.ode4j.ode.DJoint.DJointFeedback;
 import org.ode4j.ode.DJointGroup;
 import org.ode4j.ode.DMisc;
-import org.ode4j.ode.DRotation;
-import org.ode4j.ode.DSpace;
 import org.ode4j.ode.DWorld;
 import org.ode4j.ode.OdeConstants;
 import org.ode4j.ode.OdeHelper;
@@ -42,8 +38,6 @@ final class Physics {
    * with atoms of a few hundred grams, at half the cost of the engine's default 20.
    */
   private static final int SOLVER_ITERATIONS = 10;
-
-  private static final int PIPE_STAVES = 16;
 
   /**
    * A body whose speeds, averaged over {@link #REST_SAMPLES} steps, stay below these for {@link
@@ -79,7 +73,10 @@ final class Physics {
   }
 
   final DWorld world;
-  final DSpace space;
+
+  /** Which pairs the near callback looks at. */
+  private final BroadPhase broadPhase;
+
   private final DJointGroup contacts = OdeHelper.createJointGroup();
   private final DContactBuffer buffer = new DContactBuffer(MAX_CONTACTS);
   private final double friction;
@@ -98,74 +95,44 @@ final class Physics {
     world.setQuickStepNumIterations(SOLVER_ITERATIONS);
     world.setContactMaxCorrectingVel(1.0);
     world.setContactSurfaceLayer(0.0005);
-    space = OdeHelper.createHashSpace();
-    OdeHelper.createPlane(space, 0, 0, 1, 0).setData(GeomTag.WORLD);
-    for (Obstacle o : scene.obstacles()) {
-      switch (o) {
-        case Obstacle.Box b -> box(b.center(), b.size(), new DMatrix3().setIdentity());
-        case Obstacle.Pipe p -> pipe(p);
-      }
-    }
+    broadPhase = new BroadPhase(new Ground(scene.obstacles()), nearCallback);
   }
 
-  private void box(Vec3 center, Vec3 size, DMatrix3 rotation) {
-    DBox box = OdeHelper.createBox(space, size.x(), size.y(), size.z());
-    box.setPosition(center.x(), center.y(), center.z());
-    box.setRotation(rotation);
-    box.setData(GeomTag.WORLD);
+  /** Adds an atom; atoms are added in id order. */
+  void add(AtomModel atom) {
+    broadPhase.add(atom);
   }
-
-  /** A pipe of flat staves around its axis: each stave a thin box, tangent to the inner radius. */
-  private void pipe(Obstacle.Pipe p) {
-    double mid = p.innerRadius() + p.wall() / 2;
-    double width = 2 * (p.innerRadius() + p.wall()) * Math.tan(Math.PI / PIPE_STAVES) * 1.05;
-    for (int i = 0; i < PIPE_STAVES; i++) {
-      double phi = 2 * Math.PI * i / PIPE_STAVES;
-      double u = Math.cos(phi) * mid;
-      double v = Math.sin(phi) * mid;
-      Vec3 c = p.center();
-      DMatrix3 r = new DMatrix3();
-      // A box with length along the pipe's axis, thickness along the radius, width tangent.
-      switch (p.axis()) {
-        case 'x' -> {
-          DRotation.dRFromAxisAndAngle(r, 1, 0, 0, phi);
-          box(new Vec3(c.x(), c.y() + u, c.z() + v), new Vec3(p.length(), p.wall(), width), r);
-        }
-        case 'y' -> {
-          DRotation.dRFromAxisAndAngle(r, 0, 1, 0, -phi);
-          box(new Vec3(c.x() + v, c.y(), c.z() + u), new Vec3(width, p.length(), p.wall()), r);
-        }
-        default -> {
-          DRotation.dRFromAxisAndAngle(r, 0, 0, 1, phi);
-          box(new Vec3(c.x() + u, c.y() + v, c.z()), new Vec3(p.wall(), width, p.length()), r);
-        }
-      }
-    }
-  }
-
-  private boolean raysOnly;
 
   /**
-   * Casts the enabled proximity rays against everything else, and nothing else: the sensing pass at
-   * the start of a control cycle.
+   * Casts the {@link LegModel#aimed aimed} proximity rays of {@code atoms}' legs against everything
+   * but their own atoms: the sensing pass at the start of a control cycle.
    */
-  void castRays() {
+  void castRays(List<AtomModel> atoms) {
     ENGINE.lock();
-    raysOnly = true;
     try {
-      space.collide(null, nearCallback);
+      broadPhase.castRays(atoms);
     } finally {
-      raysOnly = false;
       ENGINE.unlock();
     }
   }
 
-  /** Collides, steps the world by {@code dt} seconds, and clears the contacts. */
+  /**
+   * Before a step's collisions, once for each atom after its servos and its bindings' joints have
+   * moved: see {@link BroadPhase#prepare}.
+   */
+  void prepare(AtomModel atom) {
+    broadPhase.prepare(atom);
+  }
+
+  /**
+   * Collides, steps the world by {@code dt} seconds, and clears the contacts; every atom has been
+   * {@link #prepare prepared}.
+   */
   void step(double dt) {
     ENGINE.lock();
     try {
       DMisc.dRandSetSeed(seed);
-      space.collide(null, nearCallback);
+      broadPhase.collide();
       world.quickStep(dt);
       seed = DMisc.dRandGetSeed();
     } finally {
@@ -180,29 +147,8 @@ final class Physics {
   private void near(Object data, DGeom o1, DGeom o2) {
     GeomTag t1 = (GeomTag) o1.getData();
     GeomTag t2 = (GeomTag) o2.getData();
-    boolean rays1 = t1.kind() == GeomTag.Kind.RAYS || t1.kind() == GeomTag.Kind.RAY;
-    boolean rays2 = t2.kind() == GeomTag.Kind.RAYS || t2.kind() == GeomTag.Kind.RAY;
-    if (space(t1) || space(t2)) {
-      // An atom's space (of parts or of rays) near something else: look inside, unless rays would
-      // meet rays, or only rays are cast and neither is one.
-      if (rays1 && rays2 || raysOnly && !rays1 && !rays2) {
-        return;
-      }
-      if (!raysOnly && still(t1) && still(t2)) {
-        // Nothing moves: the contacts would be those of the last step, which the solver ignores
-        // between resting bodies; the tips keep the contact state they had.
-        return;
-      }
-      if (t1.atom() != t2.atom()) {
-        OdeHelper.spaceCollide2(o1, o2, data, nearCallback);
-      }
-      return;
-    }
     if (t1.kind() == GeomTag.Kind.RAY || t2.kind() == GeomTag.Kind.RAY) {
       ray(t1, o1, t2, o2);
-      return;
-    }
-    if (raysOnly) {
       return;
     }
     if (t1.atom() != null && t1.atom() == t2.atom()) {
@@ -252,8 +198,12 @@ final class Physics {
         joint.setFeedback(load.feedback);
         load.set(kinematic1 ? l1 : null, kinematic2 ? l2 : null, contact.geom.pos);
       }
-      touch(t1, contact.geom.pos);
-      touch(t2, contact.geom.pos);
+      touch(t1, t2, contact.geom.pos);
+      touch(t2, t1, contact.geom.pos);
+    }
+    if (n > 0 && b1 != null && b2 != null) {
+      broadPhase.joined(t1.atom());
+      broadPhase.joined(t2.atom());
     }
   }
 
@@ -356,26 +306,24 @@ final class Physics {
         sign * (rx * f.get1() - ry * f.get0()));
   }
 
-  private static boolean space(GeomTag tag) {
-    return tag.kind() == GeomTag.Kind.ATOM || tag.kind() == GeomTag.Kind.RAYS;
-  }
-
-  /** A resting atom or the world, for collisions. */
-  private static boolean still(GeomTag tag) {
-    AtomModel atom = tag.atom();
-    return tag.kind() == GeomTag.Kind.WORLD || (atom != null && atom.still);
-  }
-
-  /** Marks a leg's tip as touching if the contact is on its far cap. */
-  private void touch(GeomTag tag, DVector3C at) {
+  /** Marks a leg's tip as touching {@code other} if the contact is on its far cap. */
+  private void touch(GeomTag tag, GeomTag other, DVector3C at) {
     LegModel leg = tag.leg();
-    if (tag.kind() != GeomTag.Kind.LEG || leg == null || leg.touching) {
+    if (tag.kind() != GeomTag.Kind.LEG || leg == null) {
+      return;
+    }
+    boolean world = other.kind() == GeomTag.Kind.WORLD;
+    if (world ? leg.touchingGround : leg.touchingAtom) {
       return;
     }
     DVector3 tip = leg.tip();
     if (tip.distance(at) <= 1.5 * legRadius) {
       leg.contact = true;
-      leg.touching = true;
+      if (world) {
+        leg.touchingGround = true;
+      } else {
+        leg.touchingAtom = true;
+      }
     }
   }
 
@@ -398,7 +346,7 @@ final class Physics {
 
   void destroy() {
     contacts.destroy();
-    space.destroy();
+    broadPhase.destroy();
     world.destroy();
   }
 }

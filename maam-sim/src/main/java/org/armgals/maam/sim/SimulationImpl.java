@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalInt;
 import java.util.TreeMap;
+import java.util.function.IntConsumer;
 import org.armgals.maam.sim.spi.Controller;
 import org.armgals.maam.sim.spi.Pacer;
 import org.armgals.maam.spi.Body;
@@ -19,6 +20,10 @@ final class SimulationImpl implements Simulation {
 
   private final Scene scene;
   private final Physics physics;
+
+  /** The threads each pass over the atoms is spread over. */
+  private final Lanes lanes;
+
   private final TreeMap<Integer, BodyView> bodies = new TreeMap<>();
   private final List<AtomModel> atoms = new ArrayList<>();
   private final Map<Integer, Controller> controllers = new HashMap<>();
@@ -31,6 +36,7 @@ final class SimulationImpl implements Simulation {
   private final int stepsPerCycle;
   private final double dt;
   private final List<SimEvent> events = new ArrayList<>();
+
   private List<SimEvent> lastEvents = List.of();
   private long cycle;
   private long timeNanos;
@@ -44,12 +50,16 @@ final class SimulationImpl implements Simulation {
     this.pacer = b.pacer;
     this.messages = new MessageBus(b.seed, b.messageDelayNanos, b.packetLoss);
     this.physics = new Physics(scene, b.seed);
+    this.lanes = new Lanes(b.threads, "maam-sim-" + scene.name());
     this.tips = new TipMatcher(scene.params());
+    Cone cone = new Cone(scene.params().coneHalfAngle());
     List<Scene.Placement> placements = new ArrayList<>(scene.atoms());
     placements.sort(Comparator.comparingInt(Scene.Placement::id));
     for (Scene.Placement p : placements) {
-      AtomModel atom = new AtomModel(physics, p, scene.params(), b.legDynamics);
+      AtomModel atom = new AtomModel(physics, atoms.size(), p, scene.params(), cone, b.legDynamics);
       atoms.add(atom);
+      physics.add(atom);
+      emptied = new boolean[atoms.size()];
       bodies.put(p.id(), new BodyView(this, atom, sense(atom)));
       Controller c = b.controllerById.get(p.id());
       controllers.put(p.id(), c != null ? c : b.controllers.apply(p.id()));
@@ -169,31 +179,30 @@ final class SimulationImpl implements Simulation {
     pacer.pace(timeNanos);
   }
 
+  /**
+   * One physics step. Each pass over the atoms does all it can for an atom at once (with a thousand
+   * atoms, each pass reads them from memory afresh), on the {@link Lanes}; what must go in order
+   * (bindings, contacts, the solver, events) goes on this thread between passes.
+   */
   private void physicsStep() {
-    for (AtomModel atom : atoms) {
-      if (atom.pushX != 0 || atom.pushY != 0 || atom.pushZ != 0) {
-        atom.kernel.enable();
-        atom.kernel.addForce(atom.pushX, atom.pushY, atom.pushZ);
+    // Bindings re-fix their joints after both legs' servos and before collisions.
+    following = !bindings.isEmpty();
+    lanes.forEach(atoms.size(), servoPass);
+    if (following) {
+      for (Binding binding : bindings) {
+        binding.follow();
       }
-      boolean on = atom.motorsOn();
-      for (LegModel leg : atom.legs.values()) {
-        leg.servo(on, dt);
-      }
-    }
-    for (Binding binding : bindings) {
-      binding.follow();
-    }
-    for (AtomModel atom : atoms) {
-      atom.beforeCollisions();
+      lanes.forEach(atoms.size(), preparePass);
     }
     physics.step(dt);
     for (Binding binding : bindings) {
       binding.loadLegs();
     }
     timeNanos += stepNanos;
-    for (AtomModel atom : atoms) {
-      if (atom.drain(dt)) {
-        events.add(new SimEvent.BatteryEmpty(timeNanos, atom.id));
+    lanes.forEach(atoms.size(), drainPass);
+    for (int i = 0; i < atoms.size(); i++) {
+      if (emptied[i]) {
+        events.add(new SimEvent.BatteryEmpty(timeNanos, atoms.get(i).id));
       }
     }
     for (int i = 0; i < bindings.size(); i++) {
@@ -216,33 +225,70 @@ final class SimulationImpl implements Simulation {
     }
   }
 
+  private boolean following;
+  private boolean[] emptied = new boolean[0];
+  private final IntConsumer servoPass = this::servo;
+  private final IntConsumer preparePass = this::prepare;
+  private final IntConsumer drainPass = this::drain;
+  private final IntConsumer aimPass = this::aim;
+  private final IntConsumer sensePass = this::sense;
+
+  /** Atom {@code i}'s push and servos, and (unless bindings follow first) its preparation. */
+  private void servo(int i) {
+    AtomModel atom = atoms.get(i);
+    if (atom.pushX != 0 || atom.pushY != 0 || atom.pushZ != 0) {
+      atom.kernel.enable();
+      atom.kernel.addForce(atom.pushX, atom.pushY, atom.pushZ);
+    }
+    boolean on = atom.motorsOn();
+    for (LegModel leg : atom.legs) {
+      leg.servo(on, dt);
+    }
+    if (!following) {
+      physics.prepare(atom);
+    }
+  }
+
+  private void prepare(int i) {
+    physics.prepare(atoms.get(i));
+  }
+
+  /** After the engine's step: atom {@code i}'s parts, legs and battery. */
+  private void drain(int i) {
+    AtomModel atom = atoms.get(i);
+    atom.stepped();
+    emptied[i] = atom.drain(dt);
+  }
+
   private void senseAll() {
-    for (AtomModel atom : atoms) {
-      if (!atom.failed) {
-        atom.rays.enable();
+    lanes.forEach(atoms.size(), aimPass);
+    physics.castRays(atoms);
+    lanes.forEach(atoms.size(), sensePass);
+  }
+
+  /** Aims atom {@code i}'s proximity rays, but those of failed or bound legs. */
+  private void aim(int i) {
+    AtomModel atom = atoms.get(i);
+    for (LegModel leg : atom.legs) {
+      leg.aimed = false;
+      if (atom.failed || leg.failed) {
+        continue;
       }
-      for (LegModel leg : atom.legs.values()) {
-        if (atom.failed || leg.failed) {
-          continue;
-        }
-        if (leg.binding != null) {
-          leg.proximity = 0;
-        } else {
-          leg.aimRay();
-          leg.ray.enable();
-        }
+      if (leg.binding != null) {
+        leg.proximity = 0;
+      } else {
+        leg.aimRay();
+        leg.aimed = true;
       }
     }
-    physics.castRays();
-    for (AtomModel atom : atoms) {
-      atom.rays.disable();
-      for (LegModel leg : atom.legs.values()) {
-        leg.ray.disable();
-      }
-      bodies.get(atom.id).sensors = sense(atom);
-      for (LegModel leg : atom.legs.values()) {
-        leg.contact = false;
-      }
+  }
+
+  /** Reads atom {@code i}'s sensors, and starts its tips' contacts of the next period afresh. */
+  private void sense(int i) {
+    AtomModel atom = atoms.get(i);
+    bodies.get(atom.id).sensors = sense(atom);
+    for (LegModel leg : atom.legs) {
+      leg.contact = false;
     }
   }
 
@@ -363,6 +409,7 @@ final class SimulationImpl implements Simulation {
       return;
     }
     closed = true;
+    lanes.close();
     if (trace != null) {
       trace.flush();
     }

@@ -46,7 +46,7 @@ final class TipMatcher {
       if (atom.failed) {
         continue;
       }
-      for (LegModel leg : atom.legs.values()) {
+      for (LegModel leg : atom.legs) {
         if (leg.locked && leg.binding == null && !leg.failed) {
           candidates.add(leg);
           grid.computeIfAbsent(key(leg.tip(), 0, 0, 0), k -> new ArrayList<>()).add(leg);

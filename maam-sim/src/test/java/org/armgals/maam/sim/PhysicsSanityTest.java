@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.time.Duration;
 import java.util.SplittableRandom;
 import org.armgals.maam.spi.Leg;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
@@ -26,6 +27,56 @@ class PhysicsSanityTest {
         assertThat(later.leg(leg).tipContact()).as("tip %s on the ground", leg).isTrue();
       }
       assertThat(later.leg(Leg.PZ).tipContact()).isFalse();
+    }
+  }
+
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void anAtomWavingItsUpperLegsStaysWhereItStandsWithItsLowerTipsOnTheGround(LegDynamics dynamics) {
+    try (Simulation s =
+        Simulation.builder(Scenes.builtIn("single"))
+            .legDynamics(dynamics)
+            .controller(
+                1,
+                (body, cycle) -> {
+                  double a = 0.4 * Math.sin(cycle * 0.05);
+                  body.setLegTarget(Leg.PX, a, 0);
+                  body.setLegTarget(Leg.PY, 0, a);
+                  body.setLegTarget(Leg.PZ, a, -a);
+                })
+            .build()) {
+      s.runFor(Duration.ofMillis(500));
+      Vec3 settled = s.atom(1).sensors().position();
+      for (int cycle = 0; cycle < 200; cycle++) {
+        s.runCycle();
+        AtomSensors sensors = s.atom(1).sensors();
+        for (Leg leg : new Leg[] {Leg.MX, Leg.MY, Leg.MZ}) {
+          assertThat(sensors.leg(leg).tipContact()).as("tip %s on the ground", leg).isTrue();
+        }
+        for (Leg leg : new Leg[] {Leg.PX, Leg.PY, Leg.PZ}) {
+          assertThat(sensors.leg(leg).tipContact()).as("tip %s in the air", leg).isFalse();
+        }
+      }
+      assertThat(TestScenes.distance(settled, s.atom(1).sensors().position())).isLessThan(0.002);
+      if (dynamics == LegDynamics.KINEMATIC) {
+        assertThat(((BodyView) s.atom(1)).model.kernel.isEnabled()).as("at rest").isFalse();
+      }
+    }
+  }
+
+  @Test
+  void aKinematicLegThatReachesItsTargetStopsThereAndItsAtomRests() {
+    try (Simulation s =
+        Simulation.builder(Scenes.builtIn("single"))
+            .legDynamics(LegDynamics.KINEMATIC)
+            .controller(1, (body, cycle) -> body.setLegTarget(Leg.MZ, 0.05, -0.02))
+            .build()) {
+      s.runFor(Duration.ofSeconds(3));
+      LegSensors leg = s.atom(1).sensors().leg(Leg.MZ);
+      assertThat(leg.angle1()).isEqualTo(0.05);
+      assertThat(leg.angle2()).isEqualTo(-0.02);
+      // A leg still creeping towards its target where it touches the ground would keep it awake.
+      assertThat(((BodyView) s.atom(1)).model.kernel.isEnabled()).isFalse();
     }
   }
 

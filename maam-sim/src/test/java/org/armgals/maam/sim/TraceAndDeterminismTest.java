@@ -60,6 +60,41 @@ class TraceAndDeterminismTest {
     assertThat(sha256(trace(dynamics, 43))).isNotEqualTo(sha256(first));
   }
 
+  /**
+   * A crowd of {@code atoms} atoms close enough to touch, walking with seeded random targets, one
+   * of them pushed: enough atoms for every lane of a step to have some.
+   */
+  private static String crowd(LegDynamics dynamics, int atoms, int threads) {
+    StringWriter out = new StringWriter();
+    try (Simulation s =
+        Simulation.builder(Scenes.grid(atoms, 0.21))
+            .legDynamics(dynamics)
+            .threads(threads)
+            .trace(out)
+            .controllers(
+                id -> {
+                  SplittableRandom random = new SplittableRandom(id);
+                  return (body, cycle) -> {
+                    body.setLegTarget(Leg.MZ, random.nextDouble(-0.4, 0.4), 0.2);
+                    body.setLegTarget(Leg.PX, random.nextDouble(-0.5, 0.5), 0);
+                  };
+                })
+            .build()) {
+      s.runCycles(10);
+      s.push(1, new Vec3(2, 0, 0));
+      s.runCycles(10);
+    }
+    return out.toString();
+  }
+
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void aRunOnSeveralThreadsWritesTheSameTraceAsOnOne(LegDynamics dynamics)
+      throws NoSuchAlgorithmException {
+    int atoms = 3 * Lanes.MIN_PER_LANE;
+    assertThat(sha256(crowd(dynamics, atoms, 3))).isEqualTo(sha256(crowd(dynamics, atoms, 1)));
+  }
+
   @ParameterizedTest
   @EnumSource(LegDynamics.class)
   void theTraceHasAHeaderThenOneLinePerCycleWithAtomsAndEvents(LegDynamics dynamics) {

@@ -10,6 +10,8 @@ import java.time.Duration;
 import org.armgals.maam.spi.Leg;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 
 class WorldTest {
 
@@ -32,6 +34,29 @@ class WorldTest {
       s.runFor(Duration.ofSeconds(1));
       assertThat(s.atom(1).sensors().position().z()).isBetween(0.15, 0.18);
       assertThat(s.atom(1).sensors().leg(Leg.MZ).tipContact()).isTrue();
+    }
+  }
+
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void anAtomDroppedOnAnotherComesToRestOnIt(LegDynamics dynamics) {
+    Scene scene = Scenes.parse("atom 1 0 0 0.07 tripod\natom 2 0 0 0.3 tripod");
+    try (Simulation s = Simulation.builder(scene).legDynamics(dynamics).build()) {
+      s.runFor(Duration.ofSeconds(1));
+      // Alone on the ground its kernel would be 0.07 m up; on the other atom it is at least 0.12.
+      assertThat(s.atom(2).sensors().position().z()).isGreaterThan(0.12);
+    }
+  }
+
+  @ParameterizedTest
+  @EnumSource(LegDynamics.class)
+  void proximityMeasuresTheDistanceToAnotherAtom(LegDynamics dynamics) {
+    // Tip of atom 1's +x at x = 0.11; atom 2's -x tip at x = 0.19.
+    Scene scene = Scenes.parse("gravity 0 0 0\natom 1 0 0 1\natom 2 0.3 0 1");
+    try (Simulation s = Simulation.builder(scene).legDynamics(dynamics).build()) {
+      s.runCycles(2);
+      assertThat(s.atom(1).sensors().leg(Leg.PX).proximity()).isCloseTo(0.08, offset(1e-6));
+      assertThat(s.atom(2).sensors().leg(Leg.MX).proximity()).isCloseTo(0.08, offset(1e-6));
     }
   }
 

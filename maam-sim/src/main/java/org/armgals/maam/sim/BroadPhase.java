@@ -1,0 +1,272 @@
+package org.armgals.maam.sim;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import org.jspecify.annotations.Nullable;
+import org.ode4j.ode.DGeom;
+import org.ode4j.ode.DRay;
+
+/**
+ * Which pairs of geometries the narrow phase ({@link Physics}'s near callback) looks at: the parts
+ * of atoms whose boxes overlap, found with an {@link AtomGrid}; an atom's parts and what of the
+ * {@link Ground} they overlap; and, while sensing, rays and what they overlap (decision 0062).
+ *
+ * <p>The solver visits each body's contacts in the order they were made, so the pairs come in the
+ * order the engine's hash space gave them wherever that order can be kept: each atom's pairs with
+ * other atoms first, then with the obstacles, then with the ground, each with the atom's parts in
+ * {@link Parts}' order. Only the order of an atom's pairs with other atoms, and with several
+ * obstacles at once, is this class's own; an atom that touches only the ground and one obstacle
+ * moves bit for bit as it did.
+ */
+final class BroadPhase {
+
+  private final Ground ground;
+
+  /** The atoms, in id order. */
+  private final List<AtomModel> atoms = new ArrayList<>();
+
+  /** The atoms' boxes, atom i's at 6i (see {@link Boxes}), as of the last {@link #clean()}. */
+  private double[] boxes = new double[0];
+
+  private final AtomGrid grid = new AtomGrid();
+  private final double[] box = new double[6];
+  private final double[] other = new double[6];
+  private final double[] groundBox = new double[6];
+  private final DGeom.DNearCallback near;
+  private final AtomGrid.PairVisitor pairs = this::pair;
+
+  BroadPhase(Ground ground, DGeom.DNearCallback near) {
+    this.ground = ground;
+    this.near = near;
+  }
+
+  /** Adds an atom; atoms are added in id order, each at its {@link AtomModel#index}. */
+  void add(AtomModel atom) {
+    if (atom.index != atoms.size()) {
+      throw new IllegalArgumentException(
+          "atom " + atom.id + " at index " + atom.index + ": expected index " + atoms.size());
+    }
+    atoms.add(atom);
+    int n = atoms.size();
+    boxes = Arrays.copyOf(boxes, 6 * n);
+    quiet = Arrays.copyOf(quiet, n);
+    joined = Arrays.copyOf(joined, n);
+  }
+
+  /**
+   * Whether each atom's contacts with the ground and obstacles are left out this step unless
+   * another body joins it ({@link #joined}): it is still, or it {@link #restsOnTheGround rests}.
+   */
+  private boolean[] quiet = new boolean[0];
+
+  /** Whether a contact made this step joined each atom's body to another body. */
+  private boolean[] joined = new boolean[0];
+
+  /** A contact made this step joined {@code atom}'s body to another body, which may wake it. */
+  void joined(AtomModel atom) {
+    joined[atom.index] = true;
+  }
+
+  /**
+   * Before a step's collisions, for each atom after its servos and its bindings: decides whether it
+   * is still, starts the pass on its parts (the engine cleaned every space at the start of one),
+   * files its box, and decides whether its contacts with the ground can be left out, as far as that
+   * can be told before other atoms' contacts are made; its tips keep touching the ground where they
+   * do. Done while the atom is at hand: with a thousand atoms, every pass over them reads them from
+   * memory afresh.
+   */
+  void prepare(AtomModel atom) {
+    int i = atom.index;
+    atom.beforeCollisions();
+    atom.parts.clean();
+    atom.parts.box(boxes, 6 * i);
+    joined[i] = false;
+    boolean rests = !atom.still && restsOnTheGround(atom);
+    quiet[i] = atom.still || rests;
+    for (LegModel leg : atom.legs) {
+      if (atom.still || rests && !leg.movesOnItsCarrier()) {
+        // Neither the part nor what it touched moved.
+        leg.contact |= leg.touchingGround;
+      } else {
+        leg.touchingGround = false;
+      }
+    }
+  }
+
+  /**
+   * Calls the near callback on this step's pairs, every atom {@link #prepare prepared}: for each
+   * atom in turn, its pairs with the atoms after it, then (as all its pairs with other atoms are
+   * made) its pairs with the obstacles and the ground, unless they are left out.
+   */
+  void collide() {
+    grid.rebuild(boxes, atoms.size());
+    for (int i = 0; i < atoms.size(); i++) {
+      grid.forEachPairOf(i, pairs);
+      if (quiet[i] && !joined[i]) {
+        // The solver would ignore its contacts with what does not move.
+        continue;
+      }
+      AtomModel atom = atoms.get(i);
+      if (atom.still) {
+        continue;
+      }
+      if (quiet[i]) {
+        // Another body touched it, and may wake it: its contacts with the ground count after all.
+        for (LegModel leg : atom.legs) {
+          leg.touchingGround = false;
+        }
+      }
+      for (int g = 0; g < ground.geoms.size(); g++) {
+        if (ground.overlaps(g, boxes, 6 * i)) {
+          ground.box(g, groundBox, 0);
+          collideParts(atom, ground.geoms.get(g), groundBox, null, 0);
+        }
+      }
+    }
+  }
+
+  /** Two atoms whose boxes overlap: their parts, unless neither atom moves. */
+  private void pair(int a, int b) {
+    AtomModel atomA = atoms.get(a);
+    AtomModel atomB = atoms.get(b);
+    if (atomA.still && atomB.still) {
+      // Nothing moves: the contacts would be those of the last step, which the solver ignores
+      // between resting bodies; the tips keep the contact state they had.
+      return;
+    }
+    Parts partsA = atomA.parts;
+    Parts partsB = atomB.parts;
+    for (int i = 0; i < partsA.count(); i++) {
+      if (partsA.bound(i, box) && !Boxes.overlap(box, 0, boxes, 6 * b)) {
+        continue;
+      }
+      DGeom g = partsA.part(i);
+      Boxes.copy(g.getAABB(), box, 0);
+      for (int j = 0; j < partsB.count(); j++) {
+        if (partsB.bound(j, other) && !Boxes.overlap(other, 0, box, 0)) {
+          continue;
+        }
+        DGeom h = partsB.part(j);
+        Boxes.copy(h.getAABB(), other, 0);
+        if (Boxes.overlap(box, 0, other, 0)) {
+          near.call(null, g, h);
+        }
+      }
+    }
+  }
+
+  /**
+   * The near callback on each part of {@code atom} whose box overlaps {@code with}'s ({@code
+   * withBox}), in the parts' order: the engine's simple space's collide2. A ray ({@code aim} not
+   * null) is not tried against parts its segment surely misses.
+   */
+  private void collideParts(
+      AtomModel atom, DGeom with, double[] withBox, double @Nullable [] aim, double length) {
+    Parts parts = atom.parts;
+    for (int i = 0; i < parts.count(); i++) {
+      if (parts.bound(i, other)
+          && (!Boxes.overlap(other, 0, withBox, 0)
+              || aim != null && Boxes.segmentMisses(other, 0, aim, length))) {
+        continue;
+      }
+      DGeom g = parts.part(i);
+      Boxes.copy(g.getAABB(), box, 0);
+      if (Boxes.overlap(box, 0, withBox, 0)) {
+        near.call(null, g, with);
+      }
+    }
+  }
+
+  /**
+   * Calls the near callback on the {@link LegModel#aimed aimed} rays of {@code atoms}' legs and
+   * what their boxes overlap, but their own atoms: the sensing pass.
+   */
+  void castRays(List<AtomModel> atoms) {
+    clean();
+    for (AtomModel atom : atoms) {
+      for (LegModel leg : atom.legs) {
+        if (leg.aimed) {
+          castRay(leg);
+        }
+      }
+    }
+  }
+
+  private void castRay(LegModel leg) {
+    DRay ray = leg.ray;
+    Boxes.copy(ray.getAABB(), rayBox, 0);
+    for (int g = 0; g < ground.geoms.size(); g++) {
+      if (ground.overlaps(g, rayBox, 0)) {
+        near.call(null, ray, ground.geoms.get(g));
+      }
+    }
+    casting = leg;
+    grid.forEachOverlapping(rayBox, rayNear);
+  }
+
+  /** The leg whose ray is being cast, and the ray's box. */
+  private @Nullable LegModel casting;
+
+  private final double[] rayBox = new double[6];
+  private final AtomGrid.AtomVisitor rayNear = this::rayNear;
+
+  private void rayNear(int a) {
+    AtomModel atom = atoms.get(a);
+    LegModel leg = casting;
+    if (leg != null
+        && atom != leg.atom
+        && !Boxes.segmentMisses(boxes, 6 * a, leg.aim, leg.atom.params.proximityRange())) {
+      collideParts(atom, leg.ray, rayBox, leg.aim, leg.atom.params.proximityRange());
+    }
+  }
+
+  /** Starts the sensing pass: cleans every atom's parts and files their boxes. */
+  private void clean() {
+    for (AtomModel atom : atoms) {
+      atom.parts.clean();
+      atom.parts.box(boxes, 6 * atom.index);
+    }
+    grid.rebuild(boxes, atoms.size());
+  }
+
+  /**
+   * Whether every contact {@code atom} would have with the ground and the obstacles this step is
+   * one the solver ignores, so that none need be made: its body rests and stays at rest through the
+   * step, for no binding holds it and (unless a contact with another body {@link #joined joins} it)
+   * nothing else wakes it, and the legs that turn (whose contacts would wake it) touch none of
+   * them, their boxes overlapping none. A still atom's contacts are left out as well; this leaves
+   * out those of an atom at rest that waves its legs in the air.
+   */
+  private boolean restsOnTheGround(AtomModel atom) {
+    if (atom.kernel.isEnabled()) {
+      return false;
+    }
+    for (LegModel leg : atom.legs) {
+      if (leg.binding != null) {
+        return false;
+      }
+      if (leg.movesOnItsCarrier()
+          && atom.parts.legMayTouch(leg, ground)
+          && ground.touches(placed(leg).getAABB())) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  private static DGeom placed(LegModel leg) {
+    leg.place();
+    return leg.capsule;
+  }
+
+  void destroy() {
+    for (AtomModel atom : atoms) {
+      atom.parts.destroy();
+      for (LegModel leg : atom.legs) {
+        leg.ray.destroy();
+      }
+    }
+    ground.destroy();
+  }
+}
