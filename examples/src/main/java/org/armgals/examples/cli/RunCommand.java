@@ -13,6 +13,7 @@ import org.armgals.examples.run.Example;
 import org.armgals.examples.run.RunSettings;
 import org.armgals.examples.run.Summary;
 import org.armgals.examples.sim.SimExample;
+import org.armgals.maam.sim.LegDynamics;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -107,6 +108,17 @@ final class RunCommand implements Callable<Integer> {
   RunSettings.MetaPlace meta = RunSettings.MetaPlace.LOCAL;
 
   @Option(
+      names = "--legs",
+      paramLabel = "<model>",
+      defaultValue = "kinematic",
+      converter = LegsConverter.class,
+      description =
+          "the simulator's leg model: kinematic (one body per atom, the robots are tuned for it) or"
+              + " jointed (seven bodies per atom, slower; a robot may not walk on it as tuned);"
+              + " default ${DEFAULT-VALUE}")
+  LegDynamics legs = RunSettings.DEFAULT_LEGS;
+
+  @Option(
       names = "--out",
       paramLabel = "<dir>",
       description = "where the run leaves its trace and pictures (default runs/<example>)")
@@ -138,7 +150,8 @@ final class RunCommand implements Callable<Integer> {
             Optional.ofNullable(broker),
             outDir == null ? Path.of("runs", example.name()) : outDir,
             meta,
-            warmup(example));
+            warmup(example),
+            legs);
     Summary summary = live ? live(example, settings) : example.run(settings, out);
     out.println();
     out.println("summary of " + example.name() + ":");
@@ -254,6 +267,20 @@ final class RunCommand implements Callable<Integer> {
           option + " must be at least a nanosecond (0.000000001), was " + given);
     }
     return Duration.ofNanos(nanos);
+  }
+
+  /** {@code --legs kinematic|jointed}, any case; anything else names the value and the choices. */
+  static final class LegsConverter implements CommandLine.ITypeConverter<LegDynamics> {
+    @Override
+    public LegDynamics convert(String value) {
+      for (LegDynamics model : LegDynamics.values()) {
+        if (model.name().equalsIgnoreCase(value)) {
+          return model;
+        }
+      }
+      throw new CommandLine.TypeConversionException(
+          "'" + value + "' is not a leg model; expected kinematic or jointed");
+    }
   }
 
   /** {@code --meta local|remote}, any case; anything else names the value and the choices. */

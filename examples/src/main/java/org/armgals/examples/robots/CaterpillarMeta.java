@@ -76,7 +76,12 @@ final class CaterpillarMeta extends BMetaRobot {
             why,
             RobotKind.changeModule(
                 CaterpillarSegment.PACEMAKER,
-                Map.of(CaterpillarSegment.STRIDE, longer, CaterpillarSegment.PHASE, phase)));
+                Map.of(
+                    CaterpillarSegment.STRIDE,
+                    longer,
+                    CaterpillarSegment.PHASE,
+                    // To a millionth of a step: the beat's sum of cycles leaves crumbs below it.
+                    Math.round(phase * 1e6) / 1e6)));
     if (context.adapt(notification.entity(), change).isPresent()) {
       stride = longer;
     }

@@ -75,7 +75,9 @@ final class CaterpillarModules {
   /**
    * Reactor, the phase generator: follows the rhythm heard from ahead, {@code lag} of a step behind
    * it; beats its own with its own period and stride when it hears none (at the head, or when a
-   * message is lost). Keeps its phase between cycles: only the robot's thread touches it.
+   * message is lost). A new segment eases in: its own stride grows from nothing over its first
+   * step, so that the feet, which start straight, do not all jump to their places at once and shake
+   * a stiff chain apart. Keeps its phase between cycles: only the robot's thread touches it.
    */
   static final class Pacemaker implements Reactor {
     private final String name;
@@ -84,6 +86,9 @@ final class CaterpillarModules {
     private final double lag;
     private final double cycleSeconds;
     private double phase;
+
+    /** How much of its stride it beats, growing to 1 over its first step. */
+    private double ease;
 
     /**
      * @param periodSeconds seconds per step when beating its own rhythm
@@ -99,17 +104,29 @@ final class CaterpillarModules {
         double lag,
         double cycleSeconds,
         double phase) {
+      this(name, periodSeconds, stride, lag, cycleSeconds, phase, 0);
+    }
+
+    private Pacemaker(
+        String name,
+        double periodSeconds,
+        double stride,
+        double lag,
+        double cycleSeconds,
+        double phase,
+        double ease) {
       this.name = name;
       this.periodSeconds = periodSeconds;
       this.stride = stride;
       this.lag = lag;
       this.cycleSeconds = cycleSeconds;
       this.phase = wrap(phase);
+      this.ease = ease;
     }
 
-    /** The same pacemaker with another stride, going on from {@code phase}. */
+    /** The same pacemaker with another stride, going on from {@code phase}, at full stride. */
     Pacemaker withStride(double newStride, double fromPhase) {
-      return new Pacemaker(name, periodSeconds, newStride, lag, cycleSeconds, fromPhase);
+      return new Pacemaker(name, periodSeconds, newStride, lag, cycleSeconds, fromPhase, 1);
     }
 
     double stride() {
@@ -140,7 +157,8 @@ final class CaterpillarModules {
         out.emit(BEAT, new Beat(phase, heard.period(), heard.stride()));
       } else {
         phase = wrap(phase + cycleSeconds / periodSeconds);
-        out.emit(BEAT, new Beat(phase, periodSeconds, stride));
+        ease = Math.min(1, ease + cycleSeconds / periodSeconds);
+        out.emit(BEAT, new Beat(phase, periodSeconds, stride * ease));
       }
     }
   }
@@ -171,10 +189,13 @@ final class CaterpillarModules {
       double a = beat.stride();
       double duty = CaterpillarTuning.DUTY;
       if (u < duty) {
-        out.emit(STROKE, new Stroke(a - 2 * a * u / duty, 0));
+        double along = a - 2 * a * u / duty;
+        out.emit(STROKE, new Stroke(along, StandingChain.level(along)));
       } else {
         double th = Math.PI * (u - duty) / (1 - duty);
-        out.emit(STROKE, new Stroke(-a * Math.cos(th), a * Math.sin(th)));
+        double along = -a * Math.cos(th);
+        double lift = Math.sin(th);
+        out.emit(STROKE, new Stroke(along, StandingChain.level(along) + a * lift * lift));
       }
     }
   }

@@ -11,11 +11,20 @@ final class CaterpillarTuning {
 
   private CaterpillarTuning() {}
 
-  /** Seconds per step. */
-  static final double PERIOD = 0.8;
+  /**
+   * Seconds per step: long enough that the swing, a quarter of it, brings a foot forward by the
+   * longest stride without outrunning its servo's 6 rad/s much.
+   */
+  static final double PERIOD = 1.0;
 
-  /** How far behind the segment ahead each segment steps, in steps: a wave every 4 segments. */
-  static final double LAG = 0.25;
+  /**
+   * How far behind the segment ahead each segment steps, in steps: three quarters, so a quarter
+   * ahead: the wave runs from the tail to the head, one segment a quarter step, and a segment
+   * swings while the one ahead of it is early in its stance, its feet under or before its kernel. A
+   * stiff chain then always rests with its weight between its feet; with the wave the other way
+   * round, a chain of three tips onto its lifted end and shakes its bonds loose.
+   */
+  static final double LAG = 0.75;
 
   /** The stride the head starts with, radians: short, so that the meta level has work to do. */
   static final double START_STRIDE = 0.2;
@@ -26,14 +35,17 @@ final class CaterpillarTuning {
   /** How much the meta level lengthens the stride each time. */
   static final double STRIDE_STEP = 0.1;
 
-  /** The fraction of a step the foot is on the ground. */
-  static final double DUTY = 0.7;
+  /**
+   * The fraction of a step the foot is on the ground: three quarters, so that with the wave a
+   * quarter step per segment only one segment swings at a time.
+   */
+  static final double DUTY = 0.75;
 
   /** How the segments stand: turned about the chain's axis so that two legs slant to the ground. */
   static final double ROLL_DEGREES = 45;
 
-  /** The kernel's height standing so, metres. */
-  static final double HEIGHT = 0.085;
+  /** The kernel's height standing so, metres: where it rests, so that it does not drop. */
+  static final double HEIGHT = 0.080;
 
   /**
    * Where {@code foot} points for a tilt of {@code along} radians along the chain and {@code out}
@@ -54,7 +66,7 @@ final class CaterpillarTuning {
   static final double OUT_SIGN = 1;
 
   /** Progress per step below which the meta level lengthens the stride, metres. */
-  static final double SLOW_STEP = 0.035;
+  static final double SLOW_STEP = 0.05;
 
   /** Steps the meta level waits after an adaptation before judging again (dwell time). */
   static final int DWELL_STEPS = 2;

@@ -97,9 +97,9 @@ public final class Distributed implements SimExample {
     StringBuilder text = new StringBuilder("scene distributed-chain").append(atoms).append('\n');
     text.append(String.format(Locale.ROOT, "param batteryCapacity %s%n", capacity));
     for (int i = 0; i < atoms; i++) {
-      // Rolled 45° about the chain's axis: the atom lies on its -z and -y legs.
+      // Rolled 45° about the chain's axis: the atom lies on its -z and -y legs, where it rests.
       text.append(
-          String.format(Locale.ROOT, "atom %d %.2f 0 0.085 1 0 0 45%n", i + 1, SPACING * i));
+          String.format(Locale.ROOT, "atom %d %.2f 0 0.080 1 0 0 45%n", i + 1, SPACING * i));
     }
     for (int i = 1; i < atoms; i++) {
       text.append("bond ").append(i).append(":+x ").append(i + 1).append(":-x\n");

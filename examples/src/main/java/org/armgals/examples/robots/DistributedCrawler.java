@@ -295,8 +295,9 @@ final class DistributedCrawler extends AbstractRobot {
         out.emit(
             STRIDE,
             new Stride(
-                DistributedGait.leg(phase.value(), DistributedGait.FRONT_MZ, swing),
-                DistributedGait.leg(other, DistributedGait.FRONT_MY, swing),
+                DistributedGait.leg(
+                    phase.value(), DistributedGait.FRONT_MZ, DistributedGait.OUT_MZ, swing),
+                DistributedGait.leg(other, DistributedGait.FRONT_MY, DistributedGait.OUT_MY, swing),
                 swing));
       }
     }

@@ -65,7 +65,7 @@ final class ObstacleAtom extends AbstractRobot {
     this.index = index;
     this.periodNanos = periodNanos;
     this.cruise = new Cruise("cruise", periodNanos, offset(index));
-    Feet feet = new Feet("feet");
+    Feet feet = new Feet("feet", ObstacleGait.FOOT_SLEW);
     addSchema(
         Schema.builder(CRUISE)
             .add(metronome)

@@ -23,24 +23,45 @@ final class ObstacleGait {
   /** Where the front atom starts (m). */
   static final double FRONT_START = 0.62;
 
-  /** The step: its near face (m), height (m) and depth (m); it spans the whole path. */
+  /**
+   * The step: its near face (m), height (m) and depth (m); it spans the whole path. Two
+   * centimetres: a stiff leg's stride lifted 0.3 rad clears one, and the chain would simply walk up
+   * it; a kernel's underside (3 cm up) clears two. Deep enough that the chain does not walk off its
+   * far end in a run.
+   */
   static final double STEP_FACE = 0.75;
 
-  static final double STEP_HEIGHT = 0.01;
-  static final double STEP_DEPTH = 0.4;
+  static final double STEP_HEIGHT = 0.02;
+  static final double STEP_DEPTH = 1.0;
 
   /** The motors' torque limit (N·m): the carried atom hangs from its neighbours' bonds. */
   static final double MAX_TORQUE = 1.0;
 
-  /** Cruise: sweep amplitude (rad), lift (rad), frequency (Hz), time to reach full stride (s). */
-  static final double SWEEP = 0.4;
+  /**
+   * Cruise: sweep amplitude (rad), lift (rad), frequency (Hz), time to reach full stride (s). About
+   * 5 cm/s: the chain is stiff, and the faster it meets the step's face the harder the jolt its
+   * bonds take.
+   */
+  static final double SWEEP = 0.25;
 
   static final double LIFT = 0.3;
-  static final double FREQUENCY = 1.5;
+  static final double FREQUENCY = 1.0;
   static final double RAMP = 0.5;
 
-  /** Climb: the careful stride's lift (rad), higher than cruise's. */
-  static final double CLIMB_LIFT = 0.5;
+  /**
+   * Climb: the careful stride's sweep (rad), short so that the front feet meet the step slowly, and
+   * its lift (rad), higher than cruise's but short of the step's two centimetres.
+   */
+  static final double CLIMB_SWEEP = 0.1;
+
+  static final double CLIMB_LIFT = 0.35;
+
+  /**
+   * The most a foot's joint angle moves in one control cycle (rad): more than the gait's own
+   * strides ask (at most 0.016), far less than the servo could (0.06), so that a change of stride
+   * is eased.
+   */
+  static final double FOOT_SLEW = 0.02;
 
   /** Lift-front: how far a carried atom swings its feet out and up (rad, the cone's edge). */
   static final double CARRY = 0.52;
@@ -51,14 +72,14 @@ final class ObstacleGait {
   static final double CARRY_BEYOND = 0.10;
 
   /**
-   * The feeler: the front atom's +x leg turned by these joint angles (rad) points about 20° down,
-   * so its proximity ray meets the ground some 11 cm ahead of its tip, and the step's face or top
-   * nearer than {@link #NEAR} (m) when the step is close.
+   * The feeler: the front atom's +x leg turned by these joint angles (rad) points about 26° down,
+   * so its proximity ray meets the ground some 12 cm from its tip, 21 cm ahead of the kernel, and
+   * the step's top nearer than {@link #NEAR} (m) once the step is that close.
    */
-  static final double FEELER_A1 = -0.25;
+  static final double FEELER_A1 = -0.34;
 
-  static final double FEELER_A2 = 0.23;
-  static final double NEAR = 0.098;
+  static final double FEELER_A2 = 0.31;
+  static final double NEAR = 0.10;
 
   /** The joint's sign conventions for the two feet, found by experiment. */
   static final double SWEEP_MZ = 1;

@@ -101,8 +101,33 @@ final class ObstacleModules {
     }
   }
 
-  /** Drives the two feet (−z and −y legs) as the stride says. */
-  record Feet(String name) implements Actuator {
+  /**
+   * Drives the two feet (−z and −y legs) as the stride says, each joint angle moving at most {@code
+   * slew} radians per cycle: the gait's own strides are slower than that, but a change of stride
+   * (climb taking over, an atom carried or set down, the tripods changing step around it) is eased
+   * in rather than thrown at the servos, whose stiff legs would jolt the chain. Keeps its last
+   * command between cycles: only the robot's thread touches it.
+   */
+  static final class Feet implements Actuator {
+    private final String name;
+    private final double slew;
+
+    /** The last command: −z's two joint angles, then −y's. */
+    private final double[] last = new double[4];
+
+    /**
+     * @param slew the most a joint angle's command moves in a cycle, radians
+     */
+    Feet(String name, double slew) {
+      this.name = name;
+      this.slew = slew;
+    }
+
+    @Override
+    public String name() {
+      return name;
+    }
+
     @Override
     public List<Port<?>> inputs() {
       return List.of(STRIDE);
@@ -114,25 +139,26 @@ final class ObstacleModules {
       if (stride == null) {
         return;
       }
+      double[] next = new double[4];
       if (stride.carried()) {
         double out = ObstacleGait.CARRY;
-        body.command(Atom.target(Leg.MZ), ObstacleGait.joint(LIFT_MZ * out, 0));
-        body.command(Atom.target(Leg.MY), ObstacleGait.joint(0, LIFT_MY * out));
-        return;
+        next[0] = LIFT_MZ * out;
+        next[3] = LIFT_MY * out;
+      } else {
+        // The −y foot is half a period behind the −z foot: the atom always stands on one of them.
+        double pz = stride.phase();
+        double py = stride.phase() + Math.PI;
+        next[0] = LIFT_MZ * stride.lift() * Math.max(0, -Math.sin(pz));
+        next[1] = SWEEP_MZ * stride.sweep() * Math.cos(pz);
+        next[2] = SWEEP_MY * stride.sweep() * Math.cos(py);
+        next[3] = LIFT_MY * stride.lift() * Math.max(0, -Math.sin(py));
       }
-      // The −y foot is half a period behind the −z foot: the atom always stands on one of them.
-      double pz = stride.phase();
-      double py = stride.phase() + Math.PI;
-      body.command(
-          Atom.target(Leg.MZ),
-          ObstacleGait.joint(
-              LIFT_MZ * stride.lift() * Math.max(0, -Math.sin(pz)),
-              SWEEP_MZ * stride.sweep() * Math.cos(pz)));
-      body.command(
-          Atom.target(Leg.MY),
-          ObstacleGait.joint(
-              SWEEP_MY * stride.sweep() * Math.cos(py),
-              LIFT_MY * stride.lift() * Math.max(0, -Math.sin(py))));
+      for (int k = 0; k < last.length; k++) {
+        double step = next[k] - last[k];
+        last[k] += Math.max(-slew, Math.min(slew, step));
+      }
+      body.command(Atom.target(Leg.MZ), ObstacleGait.joint(last[0], last[1]));
+      body.command(Atom.target(Leg.MY), ObstacleGait.joint(last[2], last[3]));
     }
   }
 
@@ -166,7 +192,7 @@ final class ObstacleModules {
     }
   }
 
-  /** The climb reflex: before a step, a careful stride that lifts the feet higher. */
+  /** The climb reflex: before a step, a careful stride, shorter and lifting the feet higher. */
   record Climb(String name, long periodNanos, double offset) implements Reactor {
     @Override
     public List<Port<?>> inputs() {
@@ -186,7 +212,7 @@ final class ObstacleModules {
             STRIDE,
             new Stride(
                 phase(tick.cycle(), periodNanos, offset),
-                ObstacleGait.SWEEP,
+                ObstacleGait.CLIMB_SWEEP,
                 ObstacleGait.CLIMB_LIFT,
                 false));
       }

@@ -72,7 +72,7 @@ final class ReconfigureAtom extends AbstractRobot {
       int id, Body body, TimeSource time, long periodNanos, boolean head, boolean tail) {
     super("atom-" + id, body, time);
     this.periodNanos = periodNanos;
-    Feet feet = new Feet("feet");
+    Feet feet = new Feet("feet", ReconfigureTuning.FOOT_SLEW);
     addSchema(
         Schema.builder(CRAWL)
             .add(new Chain("chain"))

@@ -56,7 +56,7 @@ final class ReconfigureModules {
     Pacemaker(String name, long periodNanos, double phase, double amplitude) {
       this.name = name;
       this.step = advance(periodNanos);
-      this.growth = periodNanos / 1e9 / ObstacleGait.RAMP;
+      this.growth = periodNanos / 1e9 / ReconfigureTuning.RAMP;
       this.phase = phase;
       this.amplitude = amplitude;
     }
@@ -179,8 +179,8 @@ final class ReconfigureModules {
             STRIDE,
             new Stride(
                 beat.phase(),
-                beat.amplitude() * ObstacleGait.SWEEP,
-                beat.amplitude() * ObstacleGait.LIFT,
+                beat.amplitude() * ReconfigureTuning.SWEEP,
+                beat.amplitude() * ReconfigureTuning.LIFT,
                 false));
       }
     }

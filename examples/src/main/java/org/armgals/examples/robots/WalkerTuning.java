@@ -14,23 +14,29 @@ final class WalkerTuning {
   /** The legs the atom stands on, resting as a tripod. */
   static final List<Leg> GROUND = List.of(Leg.MX, Leg.MY, Leg.MZ);
 
-  /** Where each ground leg is in its circle when the gait starts, in turns. */
-  static final double[] OFFSETS = {0, 1.0 / 3, 2.0 / 3};
+  /**
+   * Where each ground leg is in its circle when the gait starts, in turns: −x, then −z a third of a
+   * turn later, then −y (with the circling's sense, the order that does not turn the atom round).
+   */
+  static final double[] OFFSETS = {0, 2.0 / 3, 1.0 / 3};
 
   /** The sense the tips circle in: +1 or -1. */
-  static final double TURN = -1;
+  static final double TURN = 1;
 
   /**
    * The direction the gait carries the atom on the ground, radians from +x (measured: the tips'
-   * circling, a third of a turn apart, shuffles the tripod towards −x with a small drift to +y).
+   * circling shuffles the tripod towards −x and −y, about 36° off −x).
    */
-  static final double HEADING = Math.PI;
+  static final double HEADING = 1.2 * Math.PI;
 
   /** Turns of the legs per second. */
-  static final double FREQUENCY = 2;
+  static final double FREQUENCY = 3;
 
-  /** How far the legs tilt from their cones' axes as they circle, radians. */
-  static final double AMPLITUDE = 0.45;
+  /**
+   * How far the legs tilt from their cones' axes as they circle, radians: the tips then go round at
+   * 6.6 rad/s, about what the servos give.
+   */
+  static final double AMPLITUDE = 0.35;
 
   /** How far behind its target a leg may be before the gait waits for it, radians. */
   static final double TRACKING = 0.3;

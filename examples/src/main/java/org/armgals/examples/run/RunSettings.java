@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Optional;
 import java.util.OptionalLong;
+import org.armgals.maam.sim.LegDynamics;
 
 /**
  * The options of {@code armgals run}, checked.
@@ -23,6 +24,8 @@ import java.util.OptionalLong;
  * @param warmup paced to real time, how much simulated time to run first on a scratch copy of the
  *     world, in virtual time, and throw away, so that the JVM has compiled what a cycle runs before
  *     the first paced cycle (zero for none; see {@link #DEFAULT_WARMUP})
+ * @param legs the simulator's leg model; the robots are tuned for {@link #DEFAULT_LEGS} and may not
+ *     walk on the other (decision 0065)
  */
 public record RunSettings(
     OptionalLong cycles,
@@ -34,7 +37,8 @@ public record RunSettings(
     Optional<URI> broker,
     Path out,
     MetaPlace meta,
-    Duration warmup) {
+    Duration warmup,
+    LegDynamics legs) {
 
   /**
    * The warm-up {@code armgals run} gives a run paced to real time unless told otherwise: long
@@ -44,6 +48,9 @@ public record RunSettings(
    */
   public static final Duration DEFAULT_WARMUP = Duration.ofSeconds(5);
 
+  /** The leg model the robots are tuned for, the simulator's default: kinematic legs. */
+  public static final LegDynamics DEFAULT_LEGS = LegDynamics.KINEMATIC;
+
   /** Where a run's meta level runs ({@code --meta}). */
   public enum MetaPlace {
     /** In the robots' JVM: no broker hop, no serialization. */
@@ -52,7 +59,22 @@ public record RunSettings(
     REMOTE
   }
 
-  /** Settings without a warm-up. */
+  /** Settings on the leg model the robots are tuned for. */
+  public RunSettings(
+      OptionalLong cycles,
+      Optional<Duration> simulated,
+      Duration period,
+      long seed,
+      Optional<Integer> atoms,
+      boolean realTime,
+      Optional<URI> broker,
+      Path out,
+      MetaPlace meta,
+      Duration warmup) {
+    this(cycles, simulated, period, seed, atoms, realTime, broker, out, meta, warmup, DEFAULT_LEGS);
+  }
+
+  /** Settings without a warm-up, on the leg model the robots are tuned for. */
   public RunSettings(
       OptionalLong cycles,
       Optional<Duration> simulated,
@@ -89,6 +111,7 @@ public record RunSettings(
     requireNonNull(out, "out");
     requireNonNull(meta, "meta");
     requireNonNull(warmup, "warmup");
+    requireNonNull(legs, "legs");
     if (cycles.isPresent() && simulated.isPresent()) {
       throw new IllegalArgumentException("give --cycles or --seconds, not both");
     }
@@ -118,24 +141,25 @@ public record RunSettings(
   /** These settings, writing into {@code out} instead. */
   public RunSettings withOut(Path out) {
     return new RunSettings(
-        cycles, simulated, period, seed, atoms, realTime, broker, out, meta, warmup);
+        cycles, simulated, period, seed, atoms, realTime, broker, out, meta, warmup, legs);
   }
 
   /** These settings with the meta level at {@code place}. */
   public RunSettings withMeta(MetaPlace place) {
     return new RunSettings(
-        cycles, simulated, period, seed, atoms, realTime, broker, out, place, warmup);
+        cycles, simulated, period, seed, atoms, realTime, broker, out, place, warmup, legs);
   }
 
   /** These settings paced to real time, with the same warm-up. */
   public RunSettings pacedToRealTime() {
-    return new RunSettings(cycles, simulated, period, seed, atoms, true, broker, out, meta, warmup);
+    return new RunSettings(
+        cycles, simulated, period, seed, atoms, true, broker, out, meta, warmup, legs);
   }
 
   /** These settings with {@code warmup} (zero for none). */
   public RunSettings withWarmup(Duration warmup) {
     return new RunSettings(
-        cycles, simulated, period, seed, atoms, realTime, broker, out, meta, warmup);
+        cycles, simulated, period, seed, atoms, realTime, broker, out, meta, warmup, legs);
   }
 
   /**
@@ -154,6 +178,13 @@ public record RunSettings(
         broker,
         scratch,
         MetaPlace.LOCAL,
-        Duration.ZERO);
+        Duration.ZERO,
+        legs);
+  }
+
+  /** These settings on the leg model {@code model}. */
+  public RunSettings withLegs(LegDynamics model) {
+    return new RunSettings(
+        cycles, simulated, period, seed, atoms, realTime, broker, out, meta, warmup, model);
   }
 }

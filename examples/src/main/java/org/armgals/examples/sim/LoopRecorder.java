@@ -270,7 +270,10 @@ final class LoopRecorder implements ReflectionListener {
         cycle, meta == null ? BASE : META, meta == null ? "" : meta.toString(), order, fields);
   }
 
-  /** A value read back from JSON as the record had it: whole numbers long, others double. */
+  /**
+   * A value read back from JSON as the record had it: a number written without a fraction or an
+   * exponent a long (as {@link LoopJson} writes one), any other a double, {@code 0.0} included.
+   */
   private static @Nullable Object simple(@Nullable Object v) {
     return switch (v) {
       case null -> null;
@@ -286,9 +289,12 @@ final class LoopRecorder implements ReflectionListener {
   }
 
   private static Object number(java.math.BigDecimal d) {
+    if (d.scale() != 0) {
+      return d.doubleValue();
+    }
     try {
       return d.longValueExact();
-    } catch (ArithmeticException fractional) {
+    } catch (ArithmeticException tooLong) {
       return d.doubleValue();
     }
   }

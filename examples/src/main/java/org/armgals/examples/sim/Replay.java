@@ -18,6 +18,7 @@ import java.util.OptionalLong;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.armgals.examples.run.RunSettings;
+import org.armgals.maam.sim.LegDynamics;
 import org.jspecify.annotations.Nullable;
 
 /**
@@ -51,6 +52,7 @@ public final class Replay {
    * @param atoms the number of atoms, if it was given
    * @param free whether its robots ran free of their meta level (paced to real time): its meta
    *     level's requests are then replayed from the loop's record, not decided again
+   * @param legs the simulator's leg model
    */
   public record Header(
       String example,
@@ -58,13 +60,15 @@ public final class Replay {
       Duration period,
       long seed,
       Optional<Integer> atoms,
-      boolean free) {
+      boolean free,
+      LegDynamics legs) {
 
     /** Checks the values. */
     public Header {
       requireNonNull(example, "example");
       requireNonNull(period, "period");
       requireNonNull(atoms, "atoms");
+      requireNonNull(legs, "legs");
     }
 
     /**
@@ -108,6 +112,7 @@ public final class Replay {
           attributes.containsKey(SimRun.ATOMS)
               ? Optional.of(Math.toIntExact(number(attributes, SimRun.ATOMS)))
               : Optional.empty();
+      LegDynamics legs = legs(attributes.get(SimRun.LEGS));
       try {
         return new Header(
             example,
@@ -115,10 +120,25 @@ public final class Replay {
             Duration.ofNanos(periodNanos),
             seed.longValueExact(),
             atoms,
-            SimRun.FREE.equals(attributes.get(SimRun.PACING)));
+            SimRun.FREE.equals(attributes.get(SimRun.PACING)),
+            legs);
       } catch (ArithmeticException e) {
         throw new IllegalArgumentException("the trace's seed " + seed + " is not a whole number");
       }
+    }
+
+    /** The trace's leg model; none: written before decision 0065, on jointed legs. */
+    private static LegDynamics legs(@Nullable Object value) {
+      if (value == null) {
+        return LegDynamics.JOINTED;
+      }
+      for (LegDynamics model : LegDynamics.values()) {
+        if (model.name().equalsIgnoreCase(String.valueOf(value))) {
+          return model;
+        }
+      }
+      throw new IllegalArgumentException(
+          "the trace's attribute '" + SimRun.LEGS + "' is " + value + ", not kinematic or jointed");
     }
 
     private static long number(Map<?, ?> attributes, String name) {
@@ -141,7 +161,10 @@ public final class Replay {
           atoms,
           false,
           Optional.empty(),
-          out);
+          out,
+          RunSettings.MetaPlace.LOCAL,
+          Duration.ZERO,
+          legs);
     }
   }
 

@@ -63,6 +63,12 @@ final class SimRun {
   static final String ATOMS = "atoms";
 
   /**
+   * The leg model, {@code kinematic} or {@code jointed}; a trace without it was written before the
+   * robots moved to kinematic legs (decision 0065), on jointed ones.
+   */
+  static final String LEGS = "legs";
+
+  /**
    * Set to {@value #FREE} when the robots ran free of their meta level (paced to real time): a
    * replay then re-applies the requests where the loop's record says they were applied.
    */
@@ -153,13 +159,14 @@ final class SimRun {
       RunSettings staged = settings.withOut(staging.dir());
       out.printf(
           Locale.ROOT,
-          "armgals %s: scene '%s', %d atoms, %d cycles of %s ms, seed %d%s%s%n",
+          "armgals %s: scene '%s', %d atoms, %d cycles of %s ms, seed %d%s%s%s%n",
           example.name(),
           scene.name(),
           scene.atoms().size(),
           cycles,
           millis(settings.period()),
           settings.seed(),
+          settings.legs() == RunSettings.DEFAULT_LEGS ? "" : ", " + legs(settings) + " legs",
           settings.realTime() ? ", paced to real time" : "",
           settings.realTime() && speed != 1.0
               ? String.format(
@@ -395,10 +402,12 @@ final class SimRun {
         Simulation.builder(scene)
             .seed(settings.seed())
             .controlPeriod(settings.period())
+            .legDynamics(settings.legs())
             .trace(trace)
             .traceAttribute(EXAMPLE, example.name())
             .traceAttribute(CYCLES, Long.toString(cycles))
-            .traceAttribute(PERIOD_NANOS, Long.toString(settings.period().toNanos()));
+            .traceAttribute(PERIOD_NANOS, Long.toString(settings.period().toNanos()))
+            .traceAttribute(LEGS, legs(settings));
     settings.atoms().ifPresent(n -> builder.traceAttribute(ATOMS, Integer.toString(n)));
     if ((settings.realTime() || Reflection.replaying())
         && example.metaLevel(settings).isPresent()) {
@@ -408,6 +417,11 @@ final class SimRun {
       builder.pacer(Pacer.realTime(speed));
     }
     return builder.build();
+  }
+
+  /** The settings' leg model as the command line and the trace write it. */
+  static String legs(RunSettings settings) {
+    return settings.legs().name().toLowerCase(Locale.ROOT);
   }
 
   /** Runs up to {@code cycles} cycles; answers those it ran and those it missed. */

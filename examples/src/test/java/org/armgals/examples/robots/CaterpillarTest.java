@@ -62,11 +62,11 @@ class CaterpillarTest {
   void metaLevelLengthensTheStrideOnlyWhileStepsAreShort() {
     CaterpillarMeta meta = new CaterpillarMeta("bmrobot");
     RecordingContext context = new RecordingContext();
-    // Six steps of 5 cm: fast enough, nothing to do.
-    feedSteps(meta, context, 0, 6, 0.05);
+    // Six steps of 6 cm: fast enough, nothing to do.
+    feedSteps(meta, context, 0, 6, 0.06);
     assertThat(context.requests).isEmpty();
     // Then steps of 1 cm: a longer stride after the dwell, and again, up to the cone's limit.
-    feedSteps(meta, context, 0.30, 12, 0.01);
+    feedSteps(meta, context, 0.36, 12, 0.01);
     assertThat(context.requests)
         .hasSize(3)
         .allMatch(

@@ -88,7 +88,7 @@ class ObstacleRobotTest {
     ByteArrayOutputStream bytes = new ByteArrayOutputStream();
     Summary summary =
         OBSTACLE.run(
-            settings(OptionalLong.of(420)), new PrintStream(bytes, true, StandardCharsets.UTF_8));
+            settings(OptionalLong.of(500)), new PrintStream(bytes, true, StandardCharsets.UTF_8));
     assertThat(summary.entries())
         .anySatisfy(e -> assertThat(e.name()).isEqualTo("adaptations"))
         .anySatisfy(e -> assertThat(e.value()).contains("addSchema lift-front"));

@@ -59,7 +59,7 @@ class LoopReplayTest {
   @Test
   void aFreeRunReplaysWithItsMetaLevelsRequestsWhereTheyWereApplied(@TempDir Path out)
       throws Exception {
-    CATERPILLAR.run(settings(out, 200, true), new PrintStream(OutputStream.nullOutputStream()));
+    CATERPILLAR.run(settings(out, 300, true), new PrintStream(OutputStream.nullOutputStream()));
     String trace = Files.readString(out.resolve("trace.jsonl"));
     assertThat(trace.lines().findFirst().orElseThrow()).contains("\"pacing\":\"free\"");
     assertThat(Files.readString(out.resolve(Reflection.LOOP))).contains("\"event\":\"applied\"");

@@ -72,10 +72,10 @@ class ReflectionTest {
     try (Simulation sim = Simulation.builder(CATERPILLAR.scene(settings)).build();
         Crew crew = CATERPILLAR.start(sim, settings, journal)) {
       Reflection reflection = crew.reflection().orElseThrow();
-      sim.runCycles(200); // the meta lengthened the stride once by cycle 161
+      sim.runCycles(210); // the meta lengthened the stride once, at 2.0 s
       assertThat(adaptations).hasSize(1);
       reflection.killMeta();
-      sim.runCycles(100); // in lock step, the robots wait for the meta until presence says lost
+      sim.runCycles(90); // in lock step, the robots wait for the meta until presence says lost
       List<Summary.Entry> figures = reflection.finish(out);
 
       assertThat(sim.cycle()).isEqualTo(300);

@@ -90,7 +90,7 @@ class SimRunTest {
         .contains("\"seed\":7")
         .contains(
             "\"attributes\":{\"example\":\"scripted\",\"cycles\":\"20\","
-                + "\"periodNanos\":\"10000000\",\"atoms\":\"2\"}");
+                + "\"periodNanos\":\"10000000\",\"legs\":\"kinematic\",\"atoms\":\"2\"}");
     assertThat(Files.readAllLines(trace, StandardCharsets.UTF_8)).hasSize(1 + 20);
     assertThat(Files.readString(trace, StandardCharsets.UTF_8))
         .contains("adaptation: switched gait, because scripted at cycle 5")
@@ -141,7 +141,7 @@ class SimRunTest {
     assertThat(header(dir.resolve(SimRun.TRACE)))
         .contains(
             "\"attributes\":{\"example\":\"scripted\",\"cycles\":\"3\","
-                + "\"periodNanos\":\"10000000\"}");
+                + "\"periodNanos\":\"10000000\",\"legs\":\"kinematic\"}");
   }
 
   @Test

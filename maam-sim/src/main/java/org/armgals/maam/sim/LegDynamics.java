@@ -11,13 +11,14 @@ public enum LegDynamics {
    * leg is a capsule of that body whose pose follows its servo within the speed limit, yields when
    * its load exceeds the torque limit, and pushes on what it touches through the contacts' surface
    * velocity. A binding fixes two kernels at the pose their bound legs set. About an order of
-   * magnitude faster than {@link #JOINTED}.
+   * magnitude faster than {@link #JOINTED}. The default, and the model the example robots are tuned
+   * for (decision 0065).
    */
   KINEMATIC,
   /**
-   * The default: each leg a body of its own on a motorized universal joint (seven bodies and six
-   * joints per atom), a binding a fixed joint between two legs: the legs' own inertia and the
-   * joints' compliance are simulated, at about ten times the cost.
+   * Each leg a body of its own on a motorized universal joint (seven bodies and six joints per
+   * atom), a binding a fixed joint between two legs: the legs' own inertia and the joints'
+   * compliance are simulated, at about ten times the cost.
    */
   JOINTED
 }

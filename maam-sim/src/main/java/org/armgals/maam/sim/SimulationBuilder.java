@@ -26,7 +26,7 @@ public final class SimulationBuilder {
   Pacer pacer = Pacer.asFastAsPossible();
   @Nullable Writer trace;
   final Map<String, String> traceAttributes = new LinkedHashMap<>();
-  LegDynamics legDynamics = LegDynamics.JOINTED;
+  LegDynamics legDynamics = LegDynamics.KINEMATIC;
   int threads = 1;
 
   SimulationBuilder(Scene scene) {
@@ -76,8 +76,9 @@ public final class SimulationBuilder {
   }
 
   /**
-   * How legs move: {@link LegDynamics#JOINTED} (the default: each leg a body on a universal joint)
-   * or {@link LegDynamics#KINEMATIC} (one body per atom, several times faster).
+   * How legs move: {@link LegDynamics#KINEMATIC} (the default: one body per atom, several times
+   * faster; the example robots are tuned for it) or {@link LegDynamics#JOINTED} (each leg a body on
+   * a universal joint).
    */
   public SimulationBuilder legDynamics(LegDynamics dynamics) {
     this.legDynamics = requireNonNull(dynamics, "dynamics");
