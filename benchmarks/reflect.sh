@@ -27,9 +27,9 @@
 #   --no-build        use benchmarks/target/benchmarks.jar as it is
 #
 # Builds benchmarks/target/benchmarks.jar with the Maven wrapper, then runs the entry point
-# org.armgals.bench.reflect.Reflect on a JDK >= 21 (scripts/java.sh) with REFLECT_JAVA_OPTS
-# (default: none, as ./armgals runs), the runs' outputs (trace, pictures, loop.jsonl) under
-# benchmarks/target/reflect/. `uptime` goes to stderr before each figure. See
+# org.armgals.bench.reflect.Reflect on a JDK >= 21 (scripts/java.sh) with ZGC, as ./armgals runs,
+# and REFLECT_JAVA_OPTS (a collector named there is taken instead), the runs' outputs (trace,
+# pictures, loop.jsonl) under benchmarks/target/reflect/. `uptime` goes to stderr before each figure. See
 # docs/benchmarks-reflection.md. Measure on a quiet machine.
 set -euo pipefail
 
@@ -64,10 +64,16 @@ if ((build)); then
 fi
 [[ -f "$jar" ]] || { echo "reflect.sh: $jar is missing; run without --no-build" >&2; exit 1; }
 
-# As ./armgals: native access for Artemis' libaio, netty's sun.misc.Unsafe allowed from JDK 23.
+# As ./armgals: native access for Artemis' libaio, netty's sun.misc.Unsafe allowed from JDK 23,
+# and ZGC unless REFLECT_JAVA_OPTS names a collector.
+major="$(jdk_major "$(dirname "$(dirname "$java")")")"
 jvm=(--enable-native-access=ALL-UNNAMED)
-if (($(jdk_major "$(dirname "$(dirname "$java")")") >= 23)); then
+if ((major >= 23)); then
   jvm+=(--sun-misc-unsafe-memory-access=allow)
+fi
+if [[ ! "${REFLECT_JAVA_OPTS:-}" =~ -XX:[+]Use[A-Za-z0-9]*GC ]]; then
+  jvm+=(-XX:+UseZGC)
+  ((major >= 23)) || jvm+=(-XX:+ZGenerational)
 fi
 read -r -a opts <<<"${REFLECT_JAVA_OPTS:-}"
 out="$here/target/reflect"
@@ -75,7 +81,7 @@ reflect() {
   "$java" "${jvm[@]}" "${opts[@]}" -cp "$jar" org.armgals.bench.reflect.Reflect \
     --out "$out" "${args[@]}" "$@"
 }
-echo "# $("$java" -version 2>&1 | head -1); options: ${opts[*]:-none}; $(nproc) cores" >&2
+echo "# $("$java" -version 2>&1 | head -1); options: ${jvm[*]} ${opts[*]:-}; $(nproc) cores" >&2
 for name in "${names[@]}"; do
   echo "# $name: $(uptime)" >&2
   case "$name" in

@@ -206,11 +206,20 @@ final class SimRun {
             crew.reflection().ifPresent(r -> r.watch(watcher));
             Watching watching =
                 new Watching(watcher, sim, scene, crew.reflection().orElse(null), programs);
-            long[] counts =
-                drive(sim, cycles, settings, recording, progress, interruption, watching, speed);
-            watcher.ended(LiveJson.end(counts[0], cycles));
-            ran = counts[0];
-            missed = counts[1];
+            Lateness lateness = new Lateness(settings.period().toNanos());
+            ran =
+                drive(
+                    sim,
+                    cycles,
+                    settings,
+                    recording,
+                    progress,
+                    interruption,
+                    watching,
+                    speed,
+                    lateness);
+            watcher.ended(LiveJson.end(ran, cycles));
+            missed = lateness.missed();
             recording.end(sim.timeNanos());
             crewMissed = crew.missedCycles();
             List<Summary.Entry> loop = new java.util.ArrayList<>();
@@ -227,6 +236,7 @@ final class SimRun {
                           "%.2f s simulated before the run, in virtual time, thrown away",
                           settings.warmup().toNanos() / 1e9)));
             }
+            lateness.entry().ifPresent(figures::add);
             figures.addAll(crew.figures());
             figures.addAll(loop);
           }
@@ -301,7 +311,16 @@ final class SimRun {
                   RunWatcher.NONE, sim, scene, crew.reflection().orElse(null), Writer.nullWriter());
           Progress progress =
               new Progress(new PrintStream(OutputStream.nullOutputStream()), false, cycles, clock);
-          drive(sim, cycles, warm, recording, progress, interruption, watching, 1.0);
+          drive(
+              sim,
+              cycles,
+              warm,
+              recording,
+              progress,
+              interruption,
+              watching,
+              1.0,
+              new Lateness(warm.period().toNanos()));
         } finally {
           crew.close();
         }
@@ -424,8 +443,8 @@ final class SimRun {
     return settings.legs().name().toLowerCase(Locale.ROOT);
   }
 
-  /** Runs up to {@code cycles} cycles; answers those it ran and those it missed. */
-  private static long[] drive(
+  /** Runs up to {@code cycles} cycles, telling {@code lateness} of each; answers those it ran. */
+  private static long drive(
       Simulation sim,
       long cycles,
       RunSettings settings,
@@ -433,9 +452,8 @@ final class SimRun {
       Progress progress,
       Interruption interruption,
       Watching watching,
-      double speed) {
-    long period = settings.period().toNanos();
-    long missed = 0;
+      double speed,
+      Lateness lateness) {
     long i = 0;
     // The schedule starts with the first cycle, as the pacer's does: not at the crew's start (a
     // meta level's JVM starting, say), nor before a first cycle slowed by the JVM's warming up.
@@ -449,13 +467,13 @@ final class SimRun {
         long elapsed = progress.elapsedNanos();
         if (i == 1) {
           origin = elapsed - (long) (sim.timeNanos() / speed);
-        } else if ((elapsed - origin) * speed > sim.timeNanos() + period) {
-          missed++;
+        } else {
+          lateness.ended(i - 1, (long) ((elapsed - origin) * speed) - sim.timeNanos());
         }
       }
       progress.update(i, sim.timeNanos());
     }
-    return new long[] {i, missed};
+    return i;
   }
 
   private static String millis(Duration period) {

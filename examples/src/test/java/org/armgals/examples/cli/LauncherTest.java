@@ -10,6 +10,7 @@ import java.nio.file.attribute.FileTime;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Instant;
 import java.util.concurrent.TimeUnit;
+import org.jspecify.annotations.Nullable;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -72,20 +73,41 @@ class LauncherTest {
   @Test
   void theJvmIsGivenTheOptionsThatKeepNettyAndArtemisQuietOnItsVersion() throws Exception {
     assertThat(launch())
-        .startsWith("java --enable-native-access=ALL-UNNAMED -jar ")
+        .startsWith("java --enable-native-access=ALL-UNNAMED -XX:+UseZGC -XX:+ZGenerational -jar ")
         .doesNotContain("unsafe");
 
     Files.writeString(jdk.resolve("release"), "JAVA_VERSION=\"25.0.1\"\n");
     assertThat(launch())
         .startsWith(
-            "java --enable-native-access=ALL-UNNAMED --sun-misc-unsafe-memory-access=allow -jar ");
+            "java --enable-native-access=ALL-UNNAMED --sun-misc-unsafe-memory-access=allow"
+                + " -XX:+UseZGC -jar ");
+  }
+
+  @Test
+  void aCollectorNamedInTheOptionsIsTakenInsteadOfZgc() throws Exception {
+    Files.writeString(jdk.resolve("release"), "JAVA_VERSION=\"25.0.1\"\n");
+
+    assertThat(launch("-XX:+UseG1GC -Xmx2g"))
+        .startsWith(
+            "java --enable-native-access=ALL-UNNAMED --sun-misc-unsafe-memory-access=allow"
+                + " -XX:+UseG1GC -Xmx2g -jar ")
+        .doesNotContain("ZGC");
+    assertThat(launch("-Xmx2g")).contains(" -XX:+UseZGC -Xmx2g -jar ");
   }
 
   /** Runs the launcher with {@code list}; answers what it printed, both streams. */
   private String launch() throws IOException, InterruptedException {
+    return launch(null);
+  }
+
+  /** As {@link #launch()}, with {@code ARMGALS_JAVA_OPTS} set to {@code options} if not null. */
+  private String launch(@Nullable String options) throws IOException, InterruptedException {
     ProcessBuilder command = new ProcessBuilder("bash", root.resolve("armgals").toString(), "list");
     command.environment().put("JAVA_HOME", jdk.toString());
     command.environment().remove("ARMGALS_JAVA_OPTS");
+    if (options != null) {
+      command.environment().put("ARMGALS_JAVA_OPTS", options);
+    }
     command.redirectErrorStream(true);
     Process process = command.start();
     String out = new String(process.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
