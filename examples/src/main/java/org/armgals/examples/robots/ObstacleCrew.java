@@ -42,8 +42,15 @@ final class ObstacleCrew implements Crew {
         new Summary.Entry(
             "step edge", String.format(Locale.ROOT, "x = %.2f m", ObstacleGait.STEP_FACE)),
         new Summary.Entry("centre at the end", String.format(Locale.ROOT, "x = %.3f m", centre)),
-        new Summary.Entry("got over the step", Boolean.toString(centre > ObstacleGait.STEP_FACE)),
+        new Summary.Entry("atoms past the step's face", pastTheFace() + " of " + robots.size()),
         new Summary.Entry("schemas at the end", String.join(", ", schemaNames())));
+  }
+
+  /** How many atoms have their kernel beyond the step's face: the chain is over when all are. */
+  private long pastTheFace() {
+    return sim.atomIds().stream()
+        .filter(id -> sim.atom(id).sensors().position().x() > ObstacleGait.STEP_FACE)
+        .count();
   }
 
   private List<String> schemaNames() {
