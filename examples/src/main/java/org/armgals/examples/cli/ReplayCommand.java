@@ -25,7 +25,10 @@ final class ReplayCommand implements Callable<Integer> {
   private final Catalog catalog;
   private final PrintStream out;
 
-  @Parameters(index = "0", paramLabel = "<trace>", description = "a trace.jsonl of 'armgals run'")
+  @Parameters(
+      index = "0",
+      paramLabel = "<trace>",
+      description = "a trace.jsonl of 'armgals run', or the directory it wrote it in")
   Path trace = Path.of("");
 
   ReplayCommand(Catalog catalog, PrintStream out) {
@@ -45,13 +48,13 @@ final class ReplayCommand implements Callable<Integer> {
     out.printf(
         Locale.ROOT,
         "replaying %s: '%s', %d cycles of %s ms, seed %d%n",
-        trace,
+        read.file(),
         example.name(),
         header.cycles(),
         BigDecimal.valueOf(header.period().toNanos(), 6).stripTrailingZeros().toPlainString(),
         header.seed());
     Replay.Verdict verdict =
-        Replay.replay(simulated, header, read.text(), trace.toAbsolutePath().getParent());
+        Replay.replay(simulated, header, read.text(), read.file().toAbsolutePath().getParent());
     out.println(verdict.line());
     return verdict instanceof Replay.Differs ? Armgals.FAILED : 0;
   }

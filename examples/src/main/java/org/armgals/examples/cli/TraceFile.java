@@ -21,13 +21,22 @@ import org.armgals.examples.sim.Replay;
  */
 record TraceFile(Path file, String text, Replay.Header header, Example example) {
 
+  /** The trace's name in a run's output directory. */
+  static final String TRACE = "trace.jsonl";
+
   /**
-   * Reads {@code file} and finds its example in {@code catalog}.
+   * Reads {@code given}, a trace or the output directory of a run that holds one, and finds its
+   * example in {@code catalog}.
    *
    * @throws UsageException the file cannot be read, is not a trace, or is a trace of an example
-   *     that {@code catalog} does not have
+   *     that {@code catalog} does not have; the directory holds no trace
    */
-  static TraceFile read(Path file, Catalog catalog) {
+  static TraceFile read(Path given, Catalog catalog) {
+    Path file = Files.isDirectory(given) ? given.resolve(TRACE) : given;
+    if (Files.isDirectory(given) && !Files.exists(file)) {
+      throw new UsageException(
+          "no trace in " + given + ": expected the output directory of 'armgals run'");
+    }
     String text = text(file);
     Replay.Header header;
     try {

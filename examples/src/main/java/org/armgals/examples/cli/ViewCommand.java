@@ -1,7 +1,6 @@
 package org.armgals.examples.cli;
 
 import java.io.PrintStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.armgals.active.TimeSource;
@@ -27,9 +26,6 @@ import picocli.CommandLine.Parameters;
             + " serves the page on 127.0.0.1 until Ctrl-C.")
 final class ViewCommand implements Callable<Integer> {
   @Mixin HelpOption help = new HelpOption();
-
-  /** The trace's name in a run's output directory. */
-  static final String TRACE = "trace.jsonl";
 
   private final Catalog catalog;
   private final PrintStream out;
@@ -57,12 +53,8 @@ final class ViewCommand implements Callable<Integer> {
 
   @Override
   public Integer call() throws InterruptedException {
-    Path file = Files.isDirectory(trace) ? trace.resolve(TRACE) : trace;
-    if (Files.isDirectory(trace) && !Files.exists(file)) {
-      throw new UsageException(
-          "no trace in " + trace + ": expected the output directory of 'armgals run'");
-    }
-    TraceFile read = TraceFile.read(file, catalog);
+    TraceFile read = TraceFile.read(trace, catalog);
+    Path file = read.file();
     Replay.Header header = read.header();
     Example example = read.example();
     if (!(example instanceof SimExample simulated)) {

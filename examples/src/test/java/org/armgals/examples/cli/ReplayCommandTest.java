@@ -86,6 +86,20 @@ class ReplayCommandTest {
   }
 
   @Test
+  void aRunsOutputDirectoryStandsForItsTrace() throws IOException {
+    Result r = armgals("replay", dir.toString());
+
+    assertThat(r.status()).as(r.err()).isZero();
+    assertThat(r.out().lines().toList().get(0)).startsWith("replaying " + trace + ": 'scripted'");
+    assertThat(r.out()).contains("reproduced exactly: 12 cycles");
+
+    Path empty = Files.createDirectory(dir.resolve("empty"));
+    assertThat(oneLineError(armgals("replay", empty.toString())))
+        .contains("no trace in " + empty)
+        .contains("output directory of 'armgals run'");
+  }
+
+  @Test
   void aChangedTraceDiffersFromTheCycleChanged() throws IOException {
     List<String> lines = new ArrayList<>(Files.readAllLines(trace, StandardCharsets.UTF_8));
     // the line of cycle 7 (the header is line 0): nudge atom 2's energy
