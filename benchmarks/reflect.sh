@@ -64,17 +64,8 @@ if ((build)); then
 fi
 [[ -f "$jar" ]] || { echo "reflect.sh: $jar is missing; run without --no-build" >&2; exit 1; }
 
-# As ./armgals: native access for Artemis' libaio, netty's sun.misc.Unsafe allowed from JDK 23,
-# and ZGC unless REFLECT_JAVA_OPTS names a collector.
-major="$(jdk_major "$(dirname "$(dirname "$java")")")"
-jvm=(--enable-native-access=ALL-UNNAMED)
-if ((major >= 23)); then
-  jvm+=(--sun-misc-unsafe-memory-access=allow)
-fi
-if [[ ! "${REFLECT_JAVA_OPTS:-}" =~ -XX:[+]Use[A-Za-z0-9]*GC ]]; then
-  jvm+=(-XX:+UseZGC)
-  ((major >= 23)) || jvm+=(-XX:+ZGenerational)
-fi
+# The JVM's options as ./armgals gives them (scripts/java.sh), then REFLECT_JAVA_OPTS.
+read -r -a jvm <<<"$(armgals_jvm_options "$java" "${REFLECT_JAVA_OPTS:-}")"
 read -r -a opts <<<"${REFLECT_JAVA_OPTS:-}"
 out="$here/target/reflect"
 reflect() {
