@@ -181,10 +181,4 @@ public record RunSettings(
         Duration.ZERO,
         legs);
   }
-
-  /** These settings on the leg model {@code model}. */
-  public RunSettings withLegs(LegDynamics model) {
-    return new RunSettings(
-        cycles, simulated, period, seed, atoms, realTime, broker, out, meta, warmup, model);
-  }
 }
