@@ -38,7 +38,8 @@ final class DistributedAtomProcess implements AutoCloseable {
             args,
             login.environment(),
             log,
-            "128m"));
+            "128m",
+            ChildJvm.Priority.SAME));
   }
 
   int atom() {

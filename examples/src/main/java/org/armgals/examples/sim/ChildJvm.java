@@ -11,7 +11,9 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.TimeUnit;
+import org.jspecify.annotations.Nullable;
 
 /**
  * A JVM a run starts for a part of itself (an atom's robot, a meta level): the main class {@code
@@ -33,19 +35,38 @@ public final class ChildJvm implements AutoCloseable {
   }
 
   /**
-   * Starts {@code main} with {@code args} and {@code environment} in a JVM of its own.
+   * The CPU priority of a child JVM beside the JVM that starts it, where the system lets a process
+   * start another below its own priority (a {@code nice} command on the {@code PATH}: Linux,
+   * macOS); elsewhere both run at the same priority.
+   */
+  public enum Priority {
+    /** The same as this JVM's. */
+    SAME,
+    /**
+     * {@value #LOWER_BY} steps of {@code nice} below this JVM's: a part that keeps its own pace (a
+     * meta level) yields the cores to the robots when both want them.
+     */
+    LOWER;
+
+    /** How many steps of {@code nice} {@link #LOWER} is below this JVM. */
+    public static final int LOWER_BY = 10;
+  }
+
+  /**
+   * Starts {@code main} with {@code args} and {@code environment} in a JVM of its own, at this
+   * JVM's priority.
    *
    * @param what what it is, for messages: {@code "the JVM of atom 2"}
    * @throws IllegalStateException it could not be started, saying why
    */
   public static ChildJvm start(
       String what, Class<?> main, List<String> args, Map<String, String> environment, Path log) {
-    return start(what, main, args, environment, log, "192m");
+    return start(what, main, args, environment, log, "192m", Priority.SAME);
   }
 
   /**
    * As {@link #start(String, Class, List, Map, Path)}, with a heap of at most {@code maxHeap} (as
-   * {@code -Xmx} takes it: {@code "128m"}).
+   * {@code -Xmx} takes it: {@code "128m"}) and at {@code priority}.
    */
   public static ChildJvm start(
       String what,
@@ -53,19 +74,28 @@ public final class ChildJvm implements AutoCloseable {
       List<String> args,
       Map<String, String> environment,
       Path log,
-      String maxHeap) {
+      String maxHeap,
+      Priority priority) {
     requireNonNull(what, "what");
     requireNonNull(maxHeap, "maxHeap");
     requireNonNull(main, "main");
     requireNonNull(args, "args");
     requireNonNull(environment, "environment");
     requireNonNull(log, "log");
+    requireNonNull(priority, "priority");
     String java =
         ProcessHandle.current()
             .info()
             .command()
             .orElse(Path.of(System.getProperty("java.home"), "bin", "java").toString());
     List<String> command = new ArrayList<>();
+    if (priority == Priority.LOWER) {
+      nice(System.getenv("PATH"))
+          .ifPresent(
+              nice ->
+                  command.addAll(
+                      List.of(nice.toString(), "-n", Integer.toString(Priority.LOWER_BY))));
+    }
     command.add(java);
     command.addAll(quiet(Runtime.version()));
     command.addAll(
@@ -87,6 +117,27 @@ public final class ChildJvm implements AutoCloseable {
       throw new IllegalStateException(
           "cannot start " + what + " (" + java + "): " + e.getMessage(), e);
     }
+  }
+
+  /**
+   * The {@code nice} command among the directories of {@code path} (as the {@code PATH} variable
+   * holds them), if one is there: it runs a command below its caller's priority ({@code nice -n
+   * <steps> command...}), and it execs the command, so the child's process is the JVM's own.
+   */
+  static Optional<Path> nice(@Nullable String path) {
+    if (path == null || path.isBlank()) {
+      return Optional.empty();
+    }
+    for (String dir : path.split(java.io.File.pathSeparator)) {
+      if (dir.isBlank()) {
+        continue;
+      }
+      Path nice = Path.of(dir, "nice");
+      if (Files.isRegularFile(nice) && Files.isExecutable(nice)) {
+        return Optional.of(nice);
+      }
+    }
+    return Optional.empty();
   }
 
   /**

@@ -345,7 +345,9 @@ public final class Reflection implements AutoCloseable {
             MetaMain.class,
             MetaMain.args(example, requireNonNull(brokerUrl), requireNonNull(prefix), settings),
             login.environment(),
-            out.resolve(META_LOG));
+            out.resolve(META_LOG),
+            "192m",
+            ChildJvm.Priority.LOWER); // the robots keep their period when the cores are scarce
     metaJvm = child;
     awaitFile(child, out.resolve(META_READY));
     for (String watched : metaOf.keySet()) {
