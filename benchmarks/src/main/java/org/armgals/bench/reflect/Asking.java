@@ -20,6 +20,8 @@ import org.armgals.kernel.StructuralMeta;
 import org.armgals.maam.sim.Scene;
 import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;
+import org.armgals.maam.sim.spi.Controller;
+import org.armgals.maam.spi.Body;
 import org.armgals.representation.p.PState;
 
 /**
@@ -88,10 +90,11 @@ public final class Asking implements SimExample {
     Reflection reflection =
         Reflection.open(sim, settings, NAME, metaLevel(settings).orElseThrow(), journal);
     try {
-      AskingRobot robot = new AskingRobot(sim.body(ATOM), sim::timeNanos);
+      Body body = sim.body(ATOM);
+      AskingRobot robot = new AskingRobot(body, sim::timeNanos);
       Island island = reflection.island(AskingRobot.NAME, AdaptationPoint.BEGIN_OF_CYCLE);
       reflection.start(robot, ATOM, island, NotificationPolicy.statesOnly());
-      sim.setController(ATOM, (atom, cycle) -> reflection.step(island));
+      sim.setController(ATOM, Controller.driving(body, () -> reflection.step(island)));
       reflection.ready();
       return new Crew() {
         @Override

@@ -5,12 +5,13 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.time.Duration;
 import org.armgals.active.TimeSource;
-import org.armgals.maam.sim.AtomBody;
 import org.armgals.maam.sim.LegDynamics;
 import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;
 import org.armgals.maam.sim.spi.Controller;
+import org.armgals.maam.spi.Atom;
 import org.armgals.maam.spi.Leg;
+import org.armgals.maam.spi.LegAngles;
 
 /**
  * Measures the real-time factor of maam-sim: {@code n} atoms in tripod pose on a grid, each run by
@@ -143,14 +144,17 @@ public final class SimRtf {
     } while (time.nanoTime() < end);
   }
 
-  /** Reads the body's sensors and swings the three upper legs of the tripod. */
+  /**
+   * Reads the body's battery and swings the three upper legs of the tripod, each in its own plane
+   * (the diagonal one a little wider).
+   */
   private static Controller swing(int id) {
-    return (AtomBody body, long cycle) -> {
-      double energy = body.sensors().energy();
+    return (body, cycle) -> {
+      double energy = body.read(Atom.BATTERY);
       double a = energy > 0 ? 0.4 * Math.sin(cycle * 0.05 + id) : 0;
-      body.setLegTarget(Leg.PX, a, 0);
-      body.setLegTarget(Leg.PY, 0, a);
-      body.setLegTarget(Leg.PZ, a, -a);
+      body.command(Atom.target(Leg.PX), LegAngles.swing(a, -Math.PI / 2));
+      body.command(Atom.target(Leg.PY), LegAngles.swing(a, 0));
+      body.command(Atom.target(Leg.PZ), LegAngles.swing(Math.sqrt(2) * a, -3 * Math.PI / 4));
     };
   }
 }

@@ -175,20 +175,17 @@ public final class Caterpillar implements SimExample {
       List<CaterpillarSegment> segments = new ArrayList<>();
       for (int i = 0; i < ids.size(); i++) {
         int id = ids.get(i);
+        TrackedBody body = TrackedBody.of(sim, id);
         CaterpillarSegment segment =
             new CaterpillarSegment(
-                "segment" + id,
-                TrackedBody.of(sim, id),
-                sim::timeNanos,
-                ids.size() - 1 - i,
-                cycleSeconds);
+                "segment" + id, body, sim::timeNanos, ids.size() - 1 - i, cycleSeconds);
         Island island = reflection.island("segment" + id, AdaptationPoint.BEGIN_OF_CYCLE);
         reflection.start(
             segment,
             id,
             island,
             id == head && metaLevel ? NotificationPolicy.statesOnly() : NotificationPolicy.quiet());
-        sim.setController(id, (atom, cycle) -> reflection.step(island));
+        sim.setController(id, body.driving(() -> reflection.step(island)));
         segments.add(segment);
       }
       reflection.ready();

@@ -224,7 +224,7 @@ final class DistributedCrew implements Crew {
           "its robot joined from a JVM of its own; the meta level in the world's JVM takes it");
     }
     for (int atom : ids) {
-      sim.setController(atom, (body, cycle) -> control(atom, cycle));
+      sim.setController(atom, (body, cycle) -> control(atom, body, cycle));
     }
   }
 
@@ -246,7 +246,11 @@ final class DistributedCrew implements Crew {
     return j;
   }
 
-  private void control(int atom, long cycle) {
+  /**
+   * Atom {@code atom}'s cycle: the commands its robot sent from its own JVM go to {@code body}, the
+   * body the simulation hands the atom's controller.
+   */
+  private void control(int atom, Body body, long cycle) {
     DistributedWorld w = requireNonNull(world, "world");
     if (cycle != published) {
       keepUp(w);
@@ -266,7 +270,7 @@ final class DistributedCrew implements Crew {
       missedOf.merge(atom, 1L, Long::sum);
     }
     if (commands != null) {
-      apply(sim.body(atom), commands);
+      apply(body, commands);
       strokes
           .computeIfAbsent(atom, a -> new TreeMap<>())
           .put(commands.timeNanos(), stroke(commands));

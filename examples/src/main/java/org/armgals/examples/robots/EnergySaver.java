@@ -23,6 +23,8 @@ import org.armgals.kernel.Threshold;
 import org.armgals.maam.sim.Scene;
 import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;
+import org.armgals.maam.sim.spi.Controller;
+import org.armgals.maam.spi.Body;
 import org.armgals.representation.p.PState;
 import org.jspecify.annotations.Nullable;
 
@@ -166,14 +168,15 @@ public final class EnergySaver implements SimExample {
     requireNonNull(settings, "settings");
     requireNonNull(journal, "journal");
     double period = settings.period().toNanos() / 1e9;
-    EnergyRobot robot = new EnergyRobot(sim.body(ATOM), sim::timeNanos, period, capacity);
+    Body body = sim.body(ATOM);
+    EnergyRobot robot = new EnergyRobot(body, sim::timeNanos, period, capacity);
     Level level = metaLevel ? new Level() : null;
     Reflection reflection = Reflection.open(sim, settings, name(), level, journal);
     try {
       Island island = reflection.island(ROBOT, AdaptationPoint.END_OF_CYCLE);
       reflection.start(robot, ATOM, island, NotificationPolicy.statesOnly().watching(LOW));
       EnergyCrew crew = new EnergyCrew(sim, robot, level, reflection, capacity);
-      sim.setController(ATOM, (atom, cycle) -> crew.cycle(island));
+      sim.setController(ATOM, Controller.driving(body, () -> crew.cycle(island)));
       reflection.ready();
       return crew;
     } catch (RuntimeException | Error e) {

@@ -49,7 +49,7 @@ final class ObstacleCrew implements Crew {
   /** How many atoms have their kernel beyond the step's face: the chain is over when all are. */
   private long pastTheFace() {
     return sim.atomIds().stream()
-        .filter(id -> sim.atom(id).sensors().position().x() > ObstacleGait.STEP_FACE)
+        .filter(id -> sim.sensors(id).position().x() > ObstacleGait.STEP_FACE)
         .count();
   }
 

@@ -125,7 +125,8 @@ public final class ObstacleRobot implements SimExample {
       for (int i = 0; i < ids.size(); i++) {
         int id = ids.get(i);
         boolean front = i == ids.size() - 1;
-        ObstacleAtom robot = new ObstacleAtom(i, TrackedBody.of(sim, id), sim::timeNanos, period);
+        TrackedBody body = TrackedBody.of(sim, id);
+        ObstacleAtom robot = new ObstacleAtom(i, body, sim::timeNanos, period);
         Island island = reflection.island(robot.name(), AdaptationPoint.END_OF_CYCLE);
         reflection.start(
             robot,
@@ -133,7 +134,7 @@ public final class ObstacleRobot implements SimExample {
             island,
             front ? NotificationPolicy.statesOnly() : NotificationPolicy.quiet());
         robots.add(robot);
-        sim.setController(id, (body, cycle) -> reflection.step(island));
+        sim.setController(id, body.driving(() -> reflection.step(island)));
       }
       reflection.ready();
       return new ObstacleCrew(sim, robots, reflection);

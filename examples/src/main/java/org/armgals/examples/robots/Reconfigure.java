@@ -24,6 +24,8 @@ import org.armgals.kernel.StructuralMeta;
 import org.armgals.maam.sim.Scene;
 import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;
+import org.armgals.maam.sim.spi.Controller;
+import org.armgals.maam.spi.Body;
 import org.armgals.representation.p.PState;
 import org.jspecify.annotations.Nullable;
 
@@ -145,13 +147,13 @@ public final class Reconfigure implements SimExample {
       List<ReconfigureAtom> robots = new ArrayList<>();
       for (int i = 0; i < ids.size(); i++) {
         int id = ids.get(i);
+        Body body = sim.body(id);
         ReconfigureAtom robot =
-            new ReconfigureAtom(
-                id, sim.body(id), sim::timeNanos, period, i == ids.size() - 1, i == 0);
+            new ReconfigureAtom(id, body, sim::timeNanos, period, i == ids.size() - 1, i == 0);
         Island island = reflection.island(robot.name(), AdaptationPoint.END_OF_CYCLE);
         reflection.start(robot, id, island, NotificationPolicy.statesOnly());
         robots.add(robot);
-        sim.setController(id, (body, cycle) -> reflection.step(island));
+        sim.setController(id, Controller.driving(body, () -> reflection.step(island)));
       }
       reflection.ready();
       return new ReconfigureCrew(sim, robots, level, reflection);

@@ -49,7 +49,7 @@ final class ReconfigureCrew implements Crew {
   int bonds() {
     int bound = 0;
     for (int id : sim.atomIds()) {
-      for (LegSensors leg : sim.atom(id).sensors().legs()) {
+      for (LegSensors leg : sim.sensors(id).legs()) {
         if (leg.neighbour().isPresent()) {
           bound++;
         }
@@ -68,7 +68,7 @@ final class ReconfigureCrew implements Crew {
       while (!todo.isEmpty()) {
         int id = todo.remove(todo.size() - 1);
         if (molecule.add(id)) {
-          for (LegSensors leg : sim.atom(id).sensors().legs()) {
+          for (LegSensors leg : sim.sensors(id).legs()) {
             leg.neighbour().ifPresent(todo::add);
           }
         }

@@ -53,9 +53,6 @@ final class StandingChain {
 
   /** Where the atoms {@code ids} of {@code sim} are along the path now (m): their kernels' mean. */
   static double centreX(Simulation sim, List<Integer> ids) {
-    return ids.stream()
-        .mapToDouble(id -> sim.atom(id).sensors().position().x())
-        .average()
-        .orElseThrow();
+    return ids.stream().mapToDouble(id -> sim.sensors(id).position().x()).average().orElseThrow();
   }
 }

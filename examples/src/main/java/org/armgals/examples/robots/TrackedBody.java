@@ -4,9 +4,9 @@ import static java.util.Objects.requireNonNull;
 
 import java.util.LinkedHashSet;
 import java.util.Set;
-import org.armgals.maam.sim.AtomBody;
 import org.armgals.maam.sim.Simulation;
 import org.armgals.maam.sim.Vec3;
+import org.armgals.maam.sim.spi.Controller;
 import org.armgals.maam.spi.ActuatorKey;
 import org.armgals.maam.spi.Body;
 import org.armgals.maam.spi.SensorKey;
@@ -31,13 +31,15 @@ final class TrackedBody implements Body {
    */
   record Place(double x, double y) {}
 
+  private final Simulation sim;
+  private final int atom;
   private final Body body;
-  private final AtomBody atom;
   private final Set<SensorKey<?>> sensors;
 
-  private TrackedBody(Body body, AtomBody atom) {
-    this.body = body;
+  private TrackedBody(Simulation sim, int atom) {
+    this.sim = sim;
     this.atom = atom;
+    this.body = sim.body(atom);
     Set<SensorKey<?>> all = new LinkedHashSet<>(body.sensors());
     all.add(POSITION);
     this.sensors = Set.copyOf(all);
@@ -46,7 +48,15 @@ final class TrackedBody implements Body {
   /** The body of {@code sim}'s atom {@code id}, with a position sensor. */
   static TrackedBody of(Simulation sim, int id) {
     requireNonNull(sim, "sim");
-    return new TrackedBody(sim.body(id), sim.atom(id));
+    return new TrackedBody(sim, id);
+  }
+
+  /**
+   * The controller of the atom whose robot is built on this body: each cycle, {@code step} steps
+   * the robot, once the simulation is seen to hand the controller the body this one wraps.
+   */
+  Controller driving(Runnable step) {
+    return Controller.driving(body, step);
   }
 
   @Override
@@ -67,7 +77,7 @@ final class TrackedBody implements Body {
   @Override
   public <T> T read(SensorKey<T> sensor) {
     if (POSITION.equals(sensor)) {
-      Vec3 p = atom.sensors().position();
+      Vec3 p = sim.sensors(atom).position();
       return sensor.cast(new Place(p.x(), p.y()));
     }
     return body.read(sensor);

@@ -115,14 +115,14 @@ public final class Walker implements SimExample {
     requireNonNull(settings, "settings");
     requireNonNull(journal, "journal");
     int id = sim.atomIds().get(0);
-    WalkerRobot robot =
-        new WalkerRobot(TrackedBody.of(sim, id), sim::timeNanos, settings.period().toNanos() / 1e9);
+    TrackedBody body = TrackedBody.of(sim, id);
+    WalkerRobot robot = new WalkerRobot(body, sim::timeNanos, settings.period().toNanos() / 1e9);
     Reflection reflection =
         Reflection.open(sim, settings, name(), metaLevel(settings).orElseThrow(), journal);
     try {
       Island island = reflection.island(ROBOT, AdaptationPoint.END_OF_CYCLE);
       reflection.start(robot, id, island, NotificationPolicy.statesOnly());
-      sim.setController(id, (atom, cycle) -> reflection.step(island));
+      sim.setController(id, body.driving(() -> reflection.step(island)));
       reflection.ready();
     } catch (RuntimeException | Error e) {
       reflection.close();

@@ -11,8 +11,6 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
-import java.util.OptionalInt;
 import java.util.TreeMap;
 import org.armgals.maam.sim.AtomParams;
 import org.armgals.maam.sim.AtomSensors;
@@ -130,21 +128,11 @@ public final class Playback {
     List<LegSensors> legs = new ArrayList<>();
     List<?> read = (List<?>) a.get("legs");
     for (int i = 0; i < read.size(); i++) {
-      List<?> l = (List<?>) read.get(i);
-      int neighbour = d(l, 6) < 0 ? -1 : (int) d(l, 6);
-      legs.add(
-          new LegSensors(
-              Leg.values()[i],
-              d(l, 0),
-              d(l, 1),
-              d(l, 2),
-              d(l, 3),
-              d(l, 4) != 0,
-              d(l, 5) != 0,
-              neighbour < 0 ? OptionalInt.empty() : OptionalInt.of(neighbour),
-              Optional.empty(),
-              d(l, 7),
-              d(l, 8) != 0));
+      List<Number> values = new ArrayList<>();
+      for (Object value : (List<?>) read.get(i)) {
+        values.add((Number) value);
+      }
+      legs.add(LegSensors.traced(Leg.values()[i], values));
     }
     return new AtomSensors(
         number(a, "id").intValue(),

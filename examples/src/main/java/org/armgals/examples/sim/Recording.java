@@ -50,8 +50,7 @@ final class Recording {
   /** Keeps the readings {@code sim}'s atoms have now, unless they are those of the last sample. */
   void sample(Simulation sim) {
     List<Integer> ids = sim.atomIds();
-    long readingNanos =
-        ids.isEmpty() ? sim.timeNanos() : sim.atom(ids.get(0)).sensors().timeNanos();
+    long readingNanos = ids.isEmpty() ? sim.timeNanos() : sim.sensors(ids.get(0)).timeNanos();
     if (readingNanos == lastReadingNanos) {
       return;
     }
@@ -61,7 +60,7 @@ final class Recording {
     double x = 0;
     double y = 0;
     for (int id : sim.atomIds()) {
-      AtomSensors sensors = sim.atom(id).sensors();
+      AtomSensors sensors = sim.sensors(id);
       paths
           .computeIfAbsent(id, k -> new ArrayList<>())
           .add(new Point(sensors.position().x(), sensors.position().y()));

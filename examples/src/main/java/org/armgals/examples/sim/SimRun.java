@@ -538,7 +538,7 @@ final class SimRun {
       }
       List<org.armgals.maam.sim.AtomSensors> atoms = new java.util.ArrayList<>();
       for (int id : sim.atomIds()) {
-        atoms.add(sim.atom(id).sensors());
+        atoms.add(sim.sensors(id));
       }
       watcher.frame(
           cycle,

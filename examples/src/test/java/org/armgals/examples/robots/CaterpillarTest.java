@@ -50,7 +50,7 @@ class CaterpillarTest {
             .isInstanceOf(LegBinding.Bound.class);
       }
       for (int id : ids) {
-        assertThat(sim.atom(id).sensors().tilt()).as("atom %d's tilt", id).isLessThan(0.5);
+        assertThat(sim.sensors(id).tilt()).as("atom %d's tilt", id).isLessThan(0.5);
       }
       // The short first stride makes too little progress: the meta level lengthened it.
       assertThat(journal.adaptations).isNotEmpty();
@@ -172,7 +172,7 @@ class CaterpillarTest {
 
   private static double centreX(Simulation sim) {
     return sim.atomIds().stream()
-        .mapToDouble(id -> sim.atom(id).sensors().position().x())
+        .mapToDouble(id -> sim.sensors(id).position().x())
         .average()
         .orElseThrow();
   }

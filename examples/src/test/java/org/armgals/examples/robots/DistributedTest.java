@@ -340,7 +340,7 @@ class DistributedTest {
     double y = 0;
     double z = 0;
     for (int id : sim.atomIds()) {
-      Vec3 p = sim.atom(id).sensors().position();
+      Vec3 p = sim.sensors(id).position();
       x += p.x();
       y += p.y();
       z += p.z();

@@ -129,7 +129,7 @@ class ObstacleRobotTest {
 
   private static double front(Simulation sim) {
     List<Integer> ids = sim.atomIds();
-    return sim.atom(ids.get(ids.size() - 1)).sensors().position().x();
+    return sim.sensors(ids.get(ids.size() - 1)).position().x();
   }
 
   /** Keeps what the crew tells, with the virtual time it was told at. */

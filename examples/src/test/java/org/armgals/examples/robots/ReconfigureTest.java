@@ -157,7 +157,7 @@ class ReconfigureTest {
   }
 
   private static double x(Simulation sim, int id) {
-    return sim.atom(id).sensors().position().x();
+    return sim.sensors(id).position().x();
   }
 
   private static LegBinding binding(Simulation sim, int id, Leg leg) {

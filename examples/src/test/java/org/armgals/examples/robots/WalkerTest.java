@@ -35,12 +35,12 @@ class WalkerTest {
     RunSettings settings = GaitsTestSupport.settings(Optional.empty());
     try (Simulation sim = Simulation.builder(walker.scene(settings)).build()) {
       int id = sim.atomIds().get(0);
-      Vec3 start = sim.atom(id).sensors().position();
+      Vec3 start = sim.sensors(id).position();
       try (Crew crew = walker.start(sim, settings, new TestJournal(sim::timeNanos))) {
         sim.runCycles(300); // 3 s
         assertThat(figure(crew.figures(), "module errors")).isEqualTo("0");
       }
-      AtomSensors end = sim.atom(id).sensors();
+      AtomSensors end = sim.sensors(id);
       double along =
           (end.position().x() - start.x()) * Math.cos(WalkerTuning.HEADING)
               + (end.position().y() - start.y()) * Math.sin(WalkerTuning.HEADING);

@@ -7,7 +7,9 @@ import org.armgals.examples.run.Summary;
 import org.armgals.maam.sim.Scene;
 import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;
+import org.armgals.maam.spi.Atom;
 import org.armgals.maam.spi.Leg;
+import org.armgals.maam.spi.LegAngles;
 
 /**
  * A test example: tripods on the ground ({@code --atoms} of them, one by default) whose legs swing
@@ -71,8 +73,8 @@ public final class ScriptedExample implements SimExample {
           id,
           (body, cycle) -> {
             double swing = 0.4 * Math.sin(cycle * 0.3 + id);
-            body.setLegTarget(Leg.PX, swing, 0);
-            body.setLegTarget(Leg.PY, 0, -swing);
+            body.command(Atom.target(Leg.PX), LegAngles.swing(swing, -Math.PI / 2));
+            body.command(Atom.target(Leg.PY), LegAngles.swing(-swing, 0));
             if (cycle == ADAPTATION_CYCLE && id == sim.atomIds().get(0)) {
               journal.adaptation(id, "switched gait", "scripted at cycle " + cycle);
               journal.note(id, "a note");

@@ -27,7 +27,9 @@ import org.armgals.examples.run.RunSettings;
 import org.armgals.examples.run.Summary;
 import org.armgals.maam.sim.Scene;
 import org.armgals.maam.sim.Simulation;
+import org.armgals.maam.spi.Atom;
 import org.armgals.maam.spi.Leg;
+import org.armgals.maam.spi.LegAngles;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -537,7 +539,8 @@ class SimRunTest {
         sim.setController(
             id,
             (body, cycle) -> {
-              body.setLegTarget(Leg.PX, 0.4 * Math.sin(cycle * 0.3), 0);
+              body.command(
+                  Atom.target(Leg.PX), LegAngles.swing(0.4 * Math.sin(cycle * 0.3), -Math.PI / 2));
               if (cycle == at) {
                 interruption.request();
               }

@@ -10,7 +10,9 @@ import org.armgals.maam.sim.Scene;
 import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;
 import org.armgals.maam.sim.Vec3;
+import org.armgals.maam.spi.Atom;
 import org.armgals.maam.spi.Leg;
+import org.armgals.maam.spi.LegAngles;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -35,11 +37,11 @@ class ViewsTest {
           1,
           (body, cycle) -> {
             for (Leg leg : Leg.values()) {
-              body.setLegTarget(leg, -0.3, 0.2);
+              body.command(Atom.target(leg), new LegAngles(0.36, 0.97));
             }
           });
       sim.runCycles(40);
-      AtomSensors atom = sim.atom(1).sensors();
+      AtomSensors atom = sim.sensors(1);
 
       AtomView view = Views.of(atom, params);
 
@@ -60,7 +62,7 @@ class ViewsTest {
   void straightLegsOfAnUprightAtomReachAlongTheAxes() {
     Scene scene = Scenes.parse("scene upright\ngravity 0 0 0\natom 1 1 2 3\n");
     try (Simulation sim = Simulation.builder(scene).build()) {
-      AtomView view = Views.of(sim.atom(1).sensors(), scene.params());
+      AtomView view = Views.of(sim.sensors(1), scene.params());
       double reach = scene.params().reach();
       List<AtomView.Leg> legs = view.legs();
       assertThat(legs.get(Leg.PX.ordinal()).tip()).isEqualTo(new AtomView.Vec(1 + reach, 2, 3));

@@ -41,16 +41,15 @@ public record AtomSensors(
 
   /**
    * Where {@code leg}'s tip is, as these readings place it (m): the leg pivots on the kernel's
-   * surface along its rest axis, is turned by its angles as the simulator's joint turns it (by
-   * minus {@link LegSensors#angle1()} about its first axis, fixed on the kernel, then by minus
-   * {@link LegSensors#angle2()} about its second, fixed on the leg), then by the kernel's {@link
-   * #orientation()}; {@code params} gives the kernel's radius and the leg's length. It is where the
-   * simulator has the tip, on either leg model (up to a jointed leg's give in its joint), and where
-   * the leg's proximity ray starts: what a picture of the atom draws.
+   * surface along its rest axis, points as its {@link LegSensors#angles()} say (the simulator's
+   * joint turned to those angles), then is turned by the kernel's {@link #orientation()}; {@code
+   * params} gives the kernel's radius and the leg's length. It is where the simulator has the tip,
+   * on either leg model (up to a jointed leg's give in its joint), and where the leg's proximity
+   * ray starts: what a picture of the atom draws.
    */
   public Vec3 tip(Leg leg, AtomParams params) {
-    LegSensors sensed = leg(leg);
-    DQuaternion turn = Frames.legTurn(leg, sensed.angle1(), sensed.angle2());
+    double[] joint = JointAngles.of(leg(leg).angles());
+    DQuaternion turn = Frames.legTurn(leg, joint[0], joint[1]);
     DVector3 d = Frames.rotate(turn, 0, 0, 1);
     double r = params.kernelRadius();
     double l = params.legLength();

@@ -4,35 +4,38 @@ import static java.util.Objects.requireNonNull;
 
 import java.util.List;
 import org.armgals.maam.spi.Leg;
-import org.jspecify.annotations.Nullable;
 
-/** An atom's {@link AtomBody}: the controller's view of an {@link AtomModel}. */
-final class BodyView implements AtomBody {
+/**
+ * An atom's sensors and actuators in the physics' terms (a leg's target is the joint's two axis
+ * angles): what {@link SimBody}, the public face of an atom, drives, and what the simulator's own
+ * tests drive directly. Confined to the simulation's thread.
+ */
+final class BodyView {
 
   private final SimulationImpl simulation;
   final AtomModel model;
+
+  /** The readings of the current cycle. */
   AtomSensors sensors;
 
-  BodyView(SimulationImpl simulation, AtomModel model, AtomSensors sensors) {
+  /**
+   * The joint's two angles of each leg, as read with {@link #sensors} ({@code 2 * ordinal}, {@code
+   * 2 * ordinal + 1}): what the trace records, exactly as the physics had them.
+   */
+  final double[] joints = new double[2 * Leg.values().length];
+
+  /** This atom as the framework's body: the one instance its controller is handed. */
+  final SimBody body;
+
+  BodyView(SimulationImpl simulation, AtomModel model) {
     this.simulation = simulation;
     this.model = model;
-    this.sensors = sensors;
+    this.sensors = simulation.sense(model, joints);
+    this.body = new SimBody(this);
   }
 
-  private @Nullable SimBody spiBody;
-
-  /** This atom as the framework's body SPI sees it (made on first use). */
-  SimBody spiBody() {
-    SimBody b = spiBody;
-    if (b == null) {
-      b = new SimBody(this);
-      spiBody = b;
-    }
-    return b;
-  }
-
-  @Override
-  public void setTorqueLimit(Leg leg, double torque) {
+  /** Limits {@code leg}'s motors to {@code torque} (N·m); the atom's maximum stays the ceiling. */
+  void setTorqueLimit(Leg leg, double torque) {
     requireNonNull(leg, "leg");
     if (!(torque >= 0) || Double.isInfinite(torque)) {
       throw new IllegalArgumentException(
@@ -41,18 +44,20 @@ final class BodyView implements AtomBody {
     model.leg(leg).torqueLimit = Math.min(torque, model.params.maxTorque());
   }
 
-  @Override
-  public int id() {
+  int id() {
     return model.id;
   }
 
-  @Override
-  public AtomSensors sensors() {
+  AtomSensors sensors() {
     return sensors;
   }
 
-  @Override
-  public void setLegTarget(Leg leg, double angle1, double angle2) {
+  /**
+   * Drives {@code leg} towards the joint angles {@code (angle1, angle2)} (rad) with its position
+   * servo, within its torque and speed limits; a target outside the cone is brought back onto its
+   * edge (same direction, smaller tilt).
+   */
+  void setLegTarget(Leg leg, double angle1, double angle2) {
     requireNonNull(leg, "leg");
     if (!Double.isFinite(angle1) || !Double.isFinite(angle2)) {
       throw new IllegalArgumentException(
@@ -61,29 +66,29 @@ final class BodyView implements AtomBody {
     model.leg(leg).setTarget(angle1, angle2);
   }
 
-  @Override
-  public void relax(Leg leg) {
+  /** Switches {@code leg}'s motors off: it hangs limp until the next target. */
+  void relax(Leg leg) {
     model.leg(requireNonNull(leg, "leg")).powered = false;
   }
 
-  @Override
-  public void bind(Leg leg) {
+  /** Locks {@code leg}'s connector: it binds to the first locked tip within tolerance. */
+  void bind(Leg leg) {
     model.leg(requireNonNull(leg, "leg")).locked = true;
   }
 
-  @Override
-  public void unbind(Leg leg) {
+  /** Unlocks {@code leg}'s connector, releasing its binding if it has one. */
+  void unbind(Leg leg) {
     simulation.unbind(model.leg(requireNonNull(leg, "leg")));
   }
 
-  @Override
-  public boolean send(Leg leg, String payload) {
+  /** Sends {@code payload} through {@code leg}'s binding; false if not bound or failed. */
+  boolean send(Leg leg, String payload) {
     requireNonNull(payload, "payload");
     return simulation.send(model.leg(requireNonNull(leg, "leg")), payload);
   }
 
-  @Override
-  public List<ReceivedMessage> receive() {
+  /** The messages that arrived at the start of this control cycle, oldest first. */
+  List<ReceivedMessage> receive() {
     return List.copyOf(model.inbox);
   }
 }

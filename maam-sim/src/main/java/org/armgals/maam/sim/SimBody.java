@@ -18,13 +18,15 @@ import org.armgals.maam.spi.SensorKey;
 import org.armgals.maam.spi.Tilt;
 
 /**
- * A simulated atom as the framework's {@link Body}: reads map onto the cycle's {@link AtomSensors},
- * commands onto the {@link AtomBody} actuators. Leg angles convert between the joint's two axis
- * angles and the SPI's elevation and azimuth around the cone's axis.
+ * A simulated atom as the framework's {@link Body}, the one public way to drive it: reads map onto
+ * the cycle's {@link AtomSensors}, commands onto the {@link BodyView}'s actuators. A leg target
+ * enters the physics through {@link JointAngles}, as a leg's reading left it.
  */
 final class SimBody implements Body {
 
-  private final BodyView atom;
+  /** The atom in the physics' terms. */
+  final BodyView atom;
+
   private final String id;
 
   SimBody(BodyView atom) {
@@ -71,7 +73,7 @@ final class SimBody implements Body {
     for (Leg leg : Leg.values()) {
       LegSensors l = s.leg(leg);
       if (sensor.equals(Atom.angles(leg))) {
-        return sensor.cast(angles(l.angle1(), l.angle2()));
+        return sensor.cast(l.angles());
       }
       if (sensor.equals(Atom.contact(leg))) {
         return sensor.cast(l.tipContact());
@@ -112,7 +114,7 @@ final class SimBody implements Body {
     }
     for (Leg leg : Leg.values()) {
       if (actuator.equals(Atom.target(leg))) {
-        double[] a = jointAngles((LegAngles) checked);
+        double[] a = JointAngles.of((LegAngles) checked);
         atom.setLegTarget(leg, a[0], a[1]);
         return;
       }
@@ -129,30 +131,6 @@ final class SimBody implements Body {
       }
     }
     throw new IllegalStateException("actuator '" + actuator.name() + "' is listed but not handled");
-  }
-
-  /**
-   * The joint turned by {@code a1} then {@code a2} points the leg at {@code (sin a2, -sin a1 cos
-   * a2, cos a1 cos a2)} in the frame (axis 1, axis 2, cone axis): its elevation is the angle to the
-   * cone's axis, its azimuth the angle around it from axis 1.
-   */
-  static LegAngles angles(double a1, double a2) {
-    double u = Math.sin(a2);
-    double v = -Math.sin(a1) * Math.cos(a2);
-    double w = Math.cos(a1) * Math.cos(a2);
-    double elevation = Math.atan2(Math.hypot(u, v), w);
-    double azimuth = elevation == 0 ? 0 : Math.atan2(v, u);
-    return new LegAngles(elevation, azimuth);
-  }
-
-  /** The inverse of {@link #angles}: the joint's two angles for an elevation and an azimuth. */
-  static double[] jointAngles(LegAngles target) {
-    double e = target.elevation();
-    double z = target.azimuth();
-    double u = Math.sin(e) * Math.cos(z);
-    double v = Math.sin(e) * Math.sin(z);
-    double w = Math.cos(e);
-    return new double[] {Math.atan2(-v, w), Math.asin(Math.max(-1, Math.min(1, u)))};
   }
 
   /** Roll and pitch of the kernel (Z-Y-X angles, yaw dropped): 0, 0 when its z axis is up. */

@@ -31,18 +31,31 @@ public interface Simulation extends AutoCloseable {
   /** The ids of its atoms, ascending. */
   List<Integer> atomIds();
 
-  /** The body of atom {@code id}. */
-  AtomBody atom(int id);
+  /**
+   * What atom {@code id} sensed at the start of the current control cycle, with where it is in the
+   * world (ground truth): for traces, pictures, tests and a robot's odometer, never for its
+   * controller's decisions (the {@link #body} reads what an atom can sense).
+   */
+  AtomSensors sensors(int id);
 
   /**
-   * Atom {@code id} as the MAAM framework's body SPI sees it, for a robot: its body id is {@code
-   * "a" + id}; its sensors read the values of the current cycle (see docs/simulator.md for the
-   * mapping). Drive the robot from the atom's controller ({@link #setController}), e.g. {@code
-   * (body, cycle) -> robot.cycle()}.
+   * Atom {@code id} as the MAAM framework's {@link Body}: the one way to drive an atom. Its body id
+   * is {@code "a" + id}; its sensors read the values of the current cycle and its actuators take
+   * the framework's {@code Atom} keys (leg angles as {@link org.armgals.maam.spi.LegAngles}); see
+   * docs/simulator.md for the mapping.
+   *
+   * <p>It is one instance for the simulation's life, and the very one the atom's {@link Controller}
+   * is handed each cycle: a robot is built on it before the first cycle (a kernel entity exists
+   * before the cycles that run it), and its controller steps the robot, e.g. {@link
+   * Controller#driving Controller.driving(sim.body(id), robot::cycle)}, which checks that it is
+   * handed the body the robot was built on.
    */
   Body body(int id);
 
-  /** Replaces the controller of atom {@code id} from the next control cycle on. */
+  /**
+   * Replaces the controller of atom {@code id} from the next control cycle on; it is handed {@link
+   * #body body(id)}.
+   */
   void setController(int id, Controller controller);
 
   /** Runs one control cycle and the physics of one control period. */

@@ -13,6 +13,7 @@ import org.armgals.maam.sim.spi.Controller;
 import org.armgals.maam.sim.spi.Pacer;
 import org.armgals.maam.spi.Body;
 import org.armgals.maam.spi.Leg;
+import org.armgals.maam.spi.LegAngles;
 import org.jspecify.annotations.Nullable;
 
 /** The simulation: see {@link Simulation} for the order of a control cycle. */
@@ -60,7 +61,7 @@ final class SimulationImpl implements Simulation {
       atoms.add(atom);
       physics.add(atom);
       emptied = new boolean[atoms.size()];
-      bodies.put(p.id(), new BodyView(this, atom, sense(atom)));
+      bodies.put(p.id(), new BodyView(this, atom));
       Controller c = b.controllerById.get(p.id());
       controllers.put(p.id(), c != null ? c : b.controllers.apply(p.id()));
     }
@@ -102,11 +103,12 @@ final class SimulationImpl implements Simulation {
   }
 
   @Override
-  public AtomBody atom(int id) {
-    return view(id);
+  public AtomSensors sensors(int id) {
+    return view(id).sensors;
   }
 
-  private BodyView view(int id) {
+  /** Atom {@code id} in the physics' terms. */
+  BodyView view(int id) {
     BodyView view = bodies.get(id);
     if (view == null) {
       throw new IllegalArgumentException(
@@ -117,7 +119,7 @@ final class SimulationImpl implements Simulation {
 
   @Override
   public Body body(int id) {
-    return view(id).spiBody();
+    return view(id).body;
   }
 
   @Override
@@ -155,7 +157,7 @@ final class SimulationImpl implements Simulation {
     bindLockedTips();
     for (AtomModel atom : atoms) {
       if (!atom.failed) {
-        controllers.get(atom.id).onCycle(bodies.get(atom.id), cycle);
+        controllers.get(atom.id).onCycle(bodies.get(atom.id).body, cycle);
       }
     }
     for (int i = 0; i < stepsPerCycle; i++) {
@@ -167,9 +169,9 @@ final class SimulationImpl implements Simulation {
       atom.pushZ = 0;
     }
     if (trace != null) {
-      List<AtomSensors> readings = new ArrayList<>(atoms.size());
+      List<BodyView> readings = new ArrayList<>(atoms.size());
       for (AtomModel atom : atoms) {
-        readings.add(bodies.get(atom.id).sensors);
+        readings.add(bodies.get(atom.id));
       }
       trace.cycle(cycle, start, readings, events);
     }
@@ -286,27 +288,47 @@ final class SimulationImpl implements Simulation {
   /** Reads atom {@code i}'s sensors, and starts its tips' contacts of the next period afresh. */
   private void sense(int i) {
     AtomModel atom = atoms.get(i);
-    bodies.get(atom.id).sensors = sense(atom);
+    BodyView view = bodies.get(atom.id);
+    view.sensors = sense(atom, view.joints);
     for (LegModel leg : atom.legs) {
       leg.contact = false;
     }
   }
 
-  private AtomSensors sense(AtomModel atom) {
+  /**
+   * What {@code atom} senses now; its legs' joint angles go to {@code joints} as the physics has
+   * them, for the trace, and leave as {@link LegSensors#angles()} through {@link JointAngles}.
+   */
+  AtomSensors sense(AtomModel atom, double[] joints) {
     List<LegSensors> legs = new ArrayList<>(6);
     for (Leg l : Leg.values()) {
       LegModel leg = atom.leg(l);
+      int j = 2 * l.ordinal();
       if (atom.failed || leg.failed) {
-        legs.add(
-            new LegSensors(
-                l, 0, 0, 0, 0, false, false, OptionalInt.empty(), Optional.empty(), 0, true));
-      } else {
-        Binding b = leg.binding;
+        joints[j] = 0;
+        joints[j + 1] = 0;
         legs.add(
             new LegSensors(
                 l,
-                leg.angle1(),
-                leg.angle2(),
+                LegAngles.AXIS,
+                0,
+                0,
+                false,
+                false,
+                OptionalInt.empty(),
+                Optional.empty(),
+                0,
+                true));
+      } else {
+        Binding b = leg.binding;
+        double a1 = leg.angle1();
+        double a2 = leg.angle2();
+        joints[j] = a1;
+        joints[j + 1] = a2;
+        legs.add(
+            new LegSensors(
+                l,
+                JointAngles.legAngles(a1, a2),
                 leg.torque1,
                 leg.torque2,
                 leg.contact,

@@ -67,7 +67,7 @@ final class TraceWriter {
     write();
   }
 
-  void cycle(long cycle, long timeNanos, List<AtomSensors> atoms, List<SimEvent> events) {
+  void cycle(long cycle, long timeNanos, List<BodyView> atoms, List<SimEvent> events) {
     StringBuilder b = line;
     b.setLength(0);
     b.append("{\"type\":\"cycle\",\"cycle\":").append(cycle).append(",\"t\":").append(timeNanos);
@@ -76,7 +76,8 @@ final class TraceWriter {
       if (i > 0) {
         b.append(',');
       }
-      atom(b, atoms.get(i));
+      BodyView atom = atoms.get(i);
+      atom(b, atom.sensors, atom.joints);
     }
     b.append("],\"events\":[");
     for (int i = 0; i < events.size(); i++) {
@@ -89,7 +90,8 @@ final class TraceWriter {
     write();
   }
 
-  private static void atom(StringBuilder b, AtomSensors s) {
+  /** One atom's readings; {@code joints}: its legs' joint angles, as the physics had them. */
+  private static void atom(StringBuilder b, AtomSensors s, double[] joints) {
     b.append("{\"id\":").append(s.id()).append(",\"p\":[");
     Json.number(b, s.position().x());
     b.append(',');
@@ -112,9 +114,9 @@ final class TraceWriter {
     for (int i = 0; i < s.legs().size(); i++) {
       LegSensors l = s.legs().get(i);
       b.append(i > 0 ? ",[" : "[");
-      Json.number(b, l.angle1());
+      Json.number(b, joints[2 * i]);
       b.append(',');
-      Json.number(b, l.angle2());
+      Json.number(b, joints[2 * i + 1]);
       b.append(',');
       Json.number(b, l.torque1());
       b.append(',');

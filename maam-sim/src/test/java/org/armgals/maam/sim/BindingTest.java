@@ -1,5 +1,6 @@
 package org.armgals.maam.sim;
 
+import static org.armgals.maam.sim.TestScenes.atom;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.ArrayList;
@@ -13,8 +14,8 @@ class BindingTest {
   private static List<SimEvent> runLocked(LegDynamics dynamics, Scene scene, int cycles) {
     List<SimEvent> events = new ArrayList<>();
     try (Simulation s = Simulation.builder(scene).legDynamics(dynamics).build()) {
-      s.atom(1).bind(Leg.PX);
-      s.atom(2).bind(Leg.MX);
+      atom(s, 1).bind(Leg.PX);
+      atom(s, 2).bind(Leg.MX);
       for (int i = 0; i < cycles; i++) {
         s.runCycle();
         events.addAll(s.lastEvents());
@@ -49,16 +50,16 @@ class BindingTest {
   void onlyLockedTipsBindUnlessAutoLockIsOn(LegDynamics dynamics) {
     try (Simulation s =
         Simulation.builder(TestScenes.facing(0.003, 0, "")).legDynamics(dynamics).build()) {
-      s.atom(1).bind(Leg.PX);
+      atom(s, 1).bind(Leg.PX);
       s.runCycles(5);
-      assertThat(s.atom(1).sensors().leg(Leg.PX).neighbour()).isEmpty();
+      assertThat(s.sensors(1).leg(Leg.PX).neighbour()).isEmpty();
     }
     try (Simulation s =
         Simulation.builder(TestScenes.facing(0.003, 0, "param autoLock true\n"))
             .legDynamics(dynamics)
             .build()) {
       s.runCycles(2);
-      assertThat(s.atom(1).sensors().leg(Leg.PX).neighbour()).hasValue(2);
+      assertThat(s.sensors(1).leg(Leg.PX).neighbour()).hasValue(2);
     }
   }
 
@@ -87,8 +88,8 @@ class BindingTest {
                 assertThat(broke.legB()).isEqualTo(Leg.MX);
               });
       s.runCycle();
-      assertThat(s.atom(1).sensors().leg(Leg.PX).neighbour()).isEmpty();
-      assertThat(s.atom(1).sensors().leg(Leg.PX).locked()).isFalse();
+      assertThat(s.sensors(1).leg(Leg.PX).neighbour()).isEmpty();
+      assertThat(s.sensors(1).leg(Leg.PX).locked()).isFalse();
     }
   }
 
@@ -98,12 +99,12 @@ class BindingTest {
     try (Simulation s =
         Simulation.builder(TestScenes.boundPair("")).legDynamics(dynamics).build()) {
       s.runCycle();
-      s.atom(2).unbind(Leg.MX);
+      atom(s, 2).unbind(Leg.MX);
       s.runCycle();
       assertThat(s.lastEvents())
           .containsExactly(new SimEvent.Unbound(10_000_000, 2, Leg.MX, 1, Leg.PX));
       s.runCycle();
-      assertThat(s.atom(1).sensors().leg(Leg.PX).neighbour()).isEmpty();
+      assertThat(s.sensors(1).leg(Leg.PX).neighbour()).isEmpty();
     }
   }
 }

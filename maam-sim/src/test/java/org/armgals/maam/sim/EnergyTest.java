@@ -1,5 +1,7 @@
 package org.armgals.maam.sim;
 
+import static org.armgals.maam.sim.TestScenes.atom;
+import static org.armgals.maam.sim.TestScenes.joints;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.data.Offset.offset;
 
@@ -19,12 +21,12 @@ class EnergyTest {
     try (Simulation s =
         Simulation.builder(Scenes.parse(FREE + "atom 1 0 0 1")).legDynamics(dynamics).build()) {
       for (Leg leg : Leg.values()) {
-        s.atom(1).relax(leg);
+        atom(s, 1).relax(leg);
       }
       s.runFor(Duration.ofSeconds(1));
       s.runCycle();
       double seconds = 1.0;
-      assertThat(s.atom(1).sensors().energy())
+      assertThat(s.sensors(1).energy())
           .isCloseTo(p.batteryCapacity() - p.idleDraw() * seconds, offset(1e-9));
     }
   }
@@ -42,13 +44,13 @@ class EnergyTest {
                 (body, cycle) -> {
                   double a = (cycle / 20) % 2 == 0 ? 0.4 : -0.4;
                   for (Leg leg : Leg.values()) {
-                    body.setLegTarget(leg, a, -a);
+                    joints(body).setLegTarget(leg, a, -a);
                   }
                 })
             .build()) {
       s.runFor(Duration.ofSeconds(1));
       s.runCycle();
-      double spent = p.batteryCapacity() - s.atom(1).sensors().energy();
+      double spent = p.batteryCapacity() - s.sensors(1).energy();
       work[0] = spent - p.idleDraw() * 1.0;
     }
     // Six legs swinging 0.8 rad against their own inertia: some work, and not an absurd amount.
@@ -64,10 +66,10 @@ class EnergyTest {
             .legDynamics(dynamics)
             .build()) {
       s.runFor(Duration.ofMillis(600));
-      assertThat(s.atom(1).sensors().energy()).isZero();
-      s.atom(1).setLegTarget(Leg.PZ, 0.4, 0);
+      assertThat(s.sensors(1).energy()).isZero();
+      atom(s, 1).setLegTarget(Leg.PZ, 0.4, 0);
       s.runFor(Duration.ofMillis(300));
-      assertThat(s.atom(1).sensors().leg(Leg.PZ).angle1()).isCloseTo(0, offset(0.01));
+      assertThat(s.sensors(1).leg(Leg.PZ).angles().elevation()).isCloseTo(0, offset(0.01));
     }
     try (Simulation s =
         Simulation.builder(Scenes.parse(FREE + "param batteryCapacity 0.05\natom 1 0 0 1"))
@@ -87,10 +89,10 @@ class EnergyTest {
   void aChargedBatteryDrivesTheSameLegToItsTarget(LegDynamics dynamics) {
     try (Simulation s =
         Simulation.builder(Scenes.parse(FREE + "atom 1 0 0 1")).legDynamics(dynamics).build()) {
-      s.atom(1).setLegTarget(Leg.PZ, 0.4, 0);
+      atom(s, 1).setLegTarget(Leg.PZ, 0.4, 0);
       s.runFor(Duration.ofMillis(300));
       s.runCycle();
-      assertThat(s.atom(1).sensors().leg(Leg.PZ).angle1()).isCloseTo(0.4, offset(0.01));
+      assertThat(s.sensors(1).leg(Leg.PZ).angles().elevation()).isCloseTo(0.4, offset(0.01));
     }
   }
 }

@@ -1,5 +1,7 @@
 package org.armgals.maam.sim;
 
+import static org.armgals.maam.sim.TestScenes.atom;
+import static org.armgals.maam.sim.TestScenes.joints;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
@@ -29,17 +31,17 @@ class LegTipTest {
             atom 1 0 0 0.2 1 2 0.5 35
             """);
     try (Simulation sim = Simulation.builder(scene).legDynamics(legs).build()) {
-      AtomModel model = ((BodyView) sim.atom(1)).model;
+      AtomModel model = atom(sim, 1).model;
       List<AtomSensors> read = new ArrayList<>();
       List<DVector3> actual = new ArrayList<>();
       sim.setController(
           1,
           (body, cycle) -> {
             for (Leg leg : Leg.values()) {
-              body.setLegTarget(leg, -0.3, 0.2);
+              joints(body).setLegTarget(leg, -0.3, 0.2);
             }
             if (cycle == 39) { // the readings and the model at the same instant: the cycle's start
-              read.add(body.sensors());
+              read.add(joints(body).sensors());
               for (Leg leg : Leg.values()) {
                 actual.add(model.leg(leg).tip());
               }
@@ -49,7 +51,9 @@ class LegTipTest {
       double tolerance = legs == LegDynamics.KINEMATIC ? 1e-12 : 1e-3;
 
       for (Leg leg : Leg.values()) {
-        assertThat(Math.abs(read.get(0).leg(leg).angle1())).as("%s turned", leg).isGreaterThan(0.2);
+        assertThat(read.get(0).leg(leg).angles().elevation())
+            .as("%s turned", leg)
+            .isGreaterThan(0.2);
         Vec3 tip = read.get(0).tip(leg, scene.params());
         DVector3 at = actual.get(leg.ordinal());
         assertThat(tip.x()).as("%s's tip, x", leg).isCloseTo(at.get0(), within(tolerance));
@@ -64,7 +68,7 @@ class LegTipTest {
   void straightLegsOfAnUprightAtomReachAlongTheAxes(LegDynamics legs) {
     Scene scene = Scenes.parse("scene upright\ngravity 0 0 0\natom 1 1 2 3\n");
     try (Simulation sim = Simulation.builder(scene).legDynamics(legs).build()) {
-      AtomSensors read = sim.atom(1).sensors();
+      AtomSensors read = sim.sensors(1);
       double reach = scene.params().reach();
 
       assertThat(read.tip(Leg.PX, scene.params())).isEqualTo(new Vec3(1 + reach, 2, 3));

@@ -23,7 +23,7 @@ class LegTorqueTest {
       double lean = Math.acos(1 / Math.sqrt(3));
       double expected = p.legMass() * 9.81 * p.legLength() / 2 * Math.sin(lean);
       for (Leg leg : new Leg[] {Leg.PX, Leg.PY, Leg.PZ}) {
-        LegSensors sensed = s.atom(1).sensors().leg(leg);
+        LegSensors sensed = s.sensors(1).leg(leg);
         assertThat(Math.hypot(sensed.torque1(), sensed.torque2()))
             .as("torque holding %s", leg)
             .isCloseTo(expected, within(0.25 * expected));

@@ -1,5 +1,6 @@
 package org.armgals.maam.sim;
 
+import static org.armgals.maam.sim.TestScenes.joints;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.time.Duration;
@@ -40,7 +41,7 @@ class LocomotionTest {
   static Controller tripodWalk(double periodSeconds, double amplitude) {
     Leg[] ground = {Leg.MX, Leg.MY, Leg.MZ};
     return (body, cycle) -> {
-      AtomSensors s = body.sensors();
+      AtomSensors s = joints(body).sensors();
       double t = s.timeNanos() / 1e9;
       double[] x = inverseRotate(s.orientation(), 1, 0, 0);
       for (int i = 0; i < ground.length; i++) {
@@ -50,7 +51,7 @@ class LocomotionTest {
         double[] d = {leg.x(), leg.y(), leg.z()};
         double[] by1 = cross(d, axis1(leg));
         double[] by2 = cross(d, axis2(leg));
-        body.setLegTarget(leg, k * dot(x, by1), k * dot(x, by2));
+        joints(body).setLegTarget(leg, k * dot(x, by1), k * dot(x, by2));
       }
     };
   }
@@ -64,12 +65,12 @@ class LocomotionTest {
             .controller(1, tripodWalk(0.6, 0.3))
             .build()) {
       s.runFor(Duration.ofMillis(300));
-      Vec3 start = s.atom(1).sensors().position();
+      Vec3 start = s.sensors(1).position();
       s.runFor(Duration.ofSeconds(3));
-      Vec3 end = s.atom(1).sensors().position();
+      Vec3 end = s.sensors(1).position();
       assertThat(end.x() - start.x()).as("metres walked along x").isGreaterThan(0.03);
       assertThat(Math.abs(end.y() - start.y())).isLessThan(end.x() - start.x());
-      assertThat(s.atom(1).sensors().tilt()).isLessThan(0.3);
+      assertThat(s.sensors(1).tilt()).isLessThan(0.3);
     }
   }
 
@@ -97,24 +98,22 @@ class LocomotionTest {
             .controllers(
                 id ->
                     (body, cycle) -> {
-                      double phase = body.sensors().timeNanos() / 1e9 / 0.8 + id / 4.0;
+                      double phase = joints(body).sensors().timeNanos() / 1e9 / 0.8 + id / 4.0;
                       double k = 0.3 * sweep(phase, 0.25);
                       double up = 0.25 * lift(phase, 0.25);
                       // -z's angle 2 moves its tip along +x and angle 1 down; -y's angle 1 along
                       // -x and angle 2 up (the atom turned 45° about x).
-                      body.setLegTarget(Leg.MZ, -up, k);
-                      body.setLegTarget(Leg.MY, -k, up);
+                      joints(body).setLegTarget(Leg.MZ, -up, k);
+                      joints(body).setLegTarget(Leg.MY, -k, up);
                     })
             .build()) {
       s.runFor(Duration.ofMillis(300));
-      double start = s.atom(1).sensors().position().x();
+      double start = s.sensors(1).position().x();
       s.runFor(Duration.ofSeconds(4));
-      double end = s.atom(1).sensors().position().x();
+      double end = s.sensors(1).position().x();
       assertThat(end - start).as("metres crawled along x").isGreaterThan(0.05);
       for (int i = 1; i < 4; i++) {
-        assertThat(s.atom(i + 1).sensors().leg(Leg.MX).neighbour())
-            .as("bond %d-%d", i, i + 1)
-            .hasValue(i);
+        assertThat(s.sensors(i + 1).leg(Leg.MX).neighbour()).as("bond %d-%d", i, i + 1).hasValue(i);
       }
     }
   }

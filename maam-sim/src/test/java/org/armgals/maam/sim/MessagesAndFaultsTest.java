@@ -1,5 +1,6 @@
 package org.armgals.maam.sim;
 
+import static org.armgals.maam.sim.TestScenes.atom;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.time.Duration;
@@ -14,13 +15,13 @@ class MessagesAndFaultsTest {
   void aMessageThroughABoundLegArrivesAfterTheDelay() {
     try (Simulation s =
         Simulation.builder(TestScenes.boundPair("")).messageDelay(Duration.ofMillis(30)).build()) {
-      assertThat(s.atom(1).send(Leg.PX, "hi")).isTrue();
+      assertThat(atom(s, 1).send(Leg.PX, "hi")).isTrue();
       List<Long> arrivals = new ArrayList<>();
       for (int i = 0; i < 6; i++) {
         s.runCycle();
-        if (!s.atom(2).receive().isEmpty()) {
+        if (!atom(s, 2).receive().isEmpty()) {
           arrivals.add(s.timeNanos());
-          assertThat(s.atom(2).receive())
+          assertThat(atom(s, 2).receive())
               .containsExactly(new ReceivedMessage(1, Leg.PX, Leg.MX, 0, "hi"));
         }
       }
@@ -32,22 +33,22 @@ class MessagesAndFaultsTest {
   @Test
   void aLegThatIsNotBoundSendsNothing() {
     try (Simulation s = Simulation.builder(TestScenes.boundPair("")).build()) {
-      assertThat(s.atom(1).send(Leg.PY, "hi")).isFalse();
+      assertThat(atom(s, 1).send(Leg.PY, "hi")).isFalse();
     }
   }
 
   @Test
   void packetLossLosesMessagesAndSaysSo() {
     try (Simulation s = Simulation.builder(TestScenes.boundPair("")).packetLoss(1.0).build()) {
-      s.atom(1).send(Leg.PX, "lost");
+      atom(s, 1).send(Leg.PX, "lost");
       s.runCycle();
       assertThat(s.lastEvents()).containsExactly(new SimEvent.MessageLost(0, 1, Leg.PX));
       s.runCycle();
-      assertThat(s.atom(2).receive()).isEmpty();
+      assertThat(atom(s, 2).receive()).isEmpty();
       s.setPacketLoss(0);
-      s.atom(1).send(Leg.PX, "through");
+      atom(s, 1).send(Leg.PX, "through");
       s.runCycle();
-      assertThat(s.atom(2).receive())
+      assertThat(atom(s, 2).receive())
           .extracting(ReceivedMessage::payload)
           .containsExactly("through");
     }
@@ -64,13 +65,13 @@ class MessagesAndFaultsTest {
       assertThat(s.lastEvents()).containsExactly(new SimEvent.AtomFailed(10_000_000, 2));
       s.runCycle();
       assertThat(runs[0]).isEqualTo(1);
-      AtomSensors sensors = s.atom(2).sensors();
+      AtomSensors sensors = s.sensors(2);
       assertThat(sensors.failed()).isTrue();
       assertThat(sensors.legs()).allMatch(LegSensors::failed);
-      assertThat(s.atom(2).send(Leg.MX, "hi")).isFalse();
-      s.atom(1).send(Leg.PX, "to the dead");
+      assertThat(atom(s, 2).send(Leg.MX, "hi")).isFalse();
+      atom(s, 1).send(Leg.PX, "to the dead");
       s.runCycles(2);
-      assertThat(s.atom(2).receive()).isEmpty();
+      assertThat(atom(s, 2).receive()).isEmpty();
     }
   }
 
@@ -78,12 +79,12 @@ class MessagesAndFaultsTest {
   void aFailedLegGoesLimpAndReadsFailed() {
     try (Simulation s = Simulation.builder(Scenes.parse("gravity 0 0 0\natom 1 0 0 1")).build()) {
       s.failLeg(1, Leg.PZ);
-      s.atom(1).setLegTarget(Leg.PZ, 0.4, 0);
-      s.atom(1).setLegTarget(Leg.PY, 0.4, 0);
+      atom(s, 1).setLegTarget(Leg.PZ, 0.4, 0);
+      atom(s, 1).setLegTarget(Leg.PY, 0.4, 0);
       s.runFor(Duration.ofMillis(300));
       s.runCycle();
-      assertThat(s.atom(1).sensors().leg(Leg.PZ).failed()).isTrue();
-      assertThat(s.atom(1).sensors().leg(Leg.PY).angle1())
+      assertThat(s.sensors(1).leg(Leg.PZ).failed()).isTrue();
+      assertThat(s.sensors(1).leg(Leg.PY).angles().elevation())
           .isCloseTo(0.4, org.assertj.core.data.Offset.offset(0.01));
     }
   }
@@ -93,12 +94,13 @@ class MessagesAndFaultsTest {
     try (Simulation s = Simulation.builder(TestScenes.boundPair("")).build()) {
       org.assertj.core.api.Assertions.assertThatThrownBy(() -> s.setPacketLoss(1.5))
           .hasMessageContaining("1.5");
-      org.assertj.core.api.Assertions.assertThatThrownBy(() -> s.atom(9))
+      org.assertj.core.api.Assertions.assertThatThrownBy(() -> atom(s, 9))
           .hasMessageContaining("no atom 9");
       org.assertj.core.api.Assertions.assertThatThrownBy(
-              () -> s.atom(1).setLegTarget(Leg.PX, Double.NaN, 0))
+              () -> atom(s, 1).setLegTarget(Leg.PX, Double.NaN, 0))
           .hasMessageContaining("NaN");
-      org.assertj.core.api.Assertions.assertThatThrownBy(() -> s.atom(1).setTorqueLimit(Leg.PX, -1))
+      org.assertj.core.api.Assertions.assertThatThrownBy(
+              () -> atom(s, 1).setTorqueLimit(Leg.PX, -1))
           .hasMessageContaining("-1.0");
     }
     org.assertj.core.api.Assertions.assertThatThrownBy(

@@ -1,5 +1,7 @@
 package org.armgals.maam.sim;
 
+import static org.armgals.maam.sim.TestScenes.atom;
+import static org.armgals.maam.sim.TestScenes.joints;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.time.Duration;
@@ -17,9 +19,9 @@ class PhysicsSanityTest {
     try (Simulation s =
         Simulation.builder(Scenes.builtIn("single")).legDynamics(dynamics).build()) {
       s.runFor(Duration.ofMillis(500));
-      AtomSensors settled = s.atom(1).sensors();
+      AtomSensors settled = s.sensors(1);
       s.runFor(Duration.ofSeconds(2));
-      AtomSensors later = s.atom(1).sensors();
+      AtomSensors later = s.sensors(1);
       assertThat(TestScenes.distance(settled.position(), later.position())).isLessThan(0.002);
       assertThat(Math.abs(later.tilt() - settled.tilt())).isLessThan(0.01);
       assertThat(later.position().z()).isBetween(0.05, 0.08);
@@ -40,16 +42,16 @@ class PhysicsSanityTest {
                 1,
                 (body, cycle) -> {
                   double a = 0.4 * Math.sin(cycle * 0.05);
-                  body.setLegTarget(Leg.PX, a, 0);
-                  body.setLegTarget(Leg.PY, 0, a);
-                  body.setLegTarget(Leg.PZ, a, -a);
+                  joints(body).setLegTarget(Leg.PX, a, 0);
+                  joints(body).setLegTarget(Leg.PY, 0, a);
+                  joints(body).setLegTarget(Leg.PZ, a, -a);
                 })
             .build()) {
       s.runFor(Duration.ofMillis(500));
-      Vec3 settled = s.atom(1).sensors().position();
+      Vec3 settled = s.sensors(1).position();
       for (int cycle = 0; cycle < 200; cycle++) {
         s.runCycle();
-        AtomSensors sensors = s.atom(1).sensors();
+        AtomSensors sensors = s.sensors(1);
         for (Leg leg : new Leg[] {Leg.MX, Leg.MY, Leg.MZ}) {
           assertThat(sensors.leg(leg).tipContact()).as("tip %s on the ground", leg).isTrue();
         }
@@ -57,9 +59,9 @@ class PhysicsSanityTest {
           assertThat(sensors.leg(leg).tipContact()).as("tip %s in the air", leg).isFalse();
         }
       }
-      assertThat(TestScenes.distance(settled, s.atom(1).sensors().position())).isLessThan(0.002);
+      assertThat(TestScenes.distance(settled, s.sensors(1).position())).isLessThan(0.002);
       if (dynamics == LegDynamics.KINEMATIC) {
-        assertThat(((BodyView) s.atom(1)).model.kernel.isEnabled()).as("at rest").isFalse();
+        assertThat(atom(s, 1).model.kernel.isEnabled()).as("at rest").isFalse();
       }
     }
   }
@@ -69,14 +71,13 @@ class PhysicsSanityTest {
     try (Simulation s =
         Simulation.builder(Scenes.builtIn("single"))
             .legDynamics(LegDynamics.KINEMATIC)
-            .controller(1, (body, cycle) -> body.setLegTarget(Leg.MZ, 0.05, -0.02))
+            .controller(1, (body, cycle) -> joints(body).setLegTarget(Leg.MZ, 0.05, -0.02))
             .build()) {
       s.runFor(Duration.ofSeconds(3));
-      LegSensors leg = s.atom(1).sensors().leg(Leg.MZ);
-      assertThat(leg.angle1()).isEqualTo(0.05);
-      assertThat(leg.angle2()).isEqualTo(-0.02);
+      LegSensors leg = s.sensors(1).leg(Leg.MZ);
+      assertThat(leg.angles()).isEqualTo(JointAngles.legAngles(0.05, -0.02));
       // A leg still creeping towards its target where it touches the ground would keep it awake.
-      assertThat(((BodyView) s.atom(1)).model.kernel.isEnabled()).isFalse();
+      assertThat(atom(s, 1).model.kernel.isEnabled()).isFalse();
     }
   }
 
@@ -92,7 +93,8 @@ class PhysicsSanityTest {
                 id ->
                     (body, cycle) -> {
                       for (Leg leg : Leg.values()) {
-                        body.setLegTarget(leg, random.nextDouble(-2, 2), random.nextDouble(-2, 2));
+                        joints(body)
+                            .setLegTarget(leg, random.nextDouble(-2, 2), random.nextDouble(-2, 2));
                       }
                     })
             .build()) {
@@ -102,8 +104,8 @@ class PhysicsSanityTest {
         }
         s.runCycle();
         for (int id : s.atomIds()) {
-          for (LegSensors leg : s.atom(id).sensors().legs()) {
-            assertThat(leg.coneAngle())
+          for (LegSensors leg : s.sensors(id).legs()) {
+            assertThat(leg.angles().elevation())
                 .as("cycle %d atom %d leg %s", i, id, leg.leg())
                 .isLessThanOrEqualTo(half + 0.02);
           }
@@ -117,13 +119,13 @@ class PhysicsSanityTest {
   void aBoundPairMovesAsOne(LegDynamics dynamics) {
     try (Simulation s =
         Simulation.builder(TestScenes.boundPair("")).legDynamics(dynamics).build()) {
-      Vec3 start2 = s.atom(2).sensors().position();
-      double apart = TestScenes.distance(start2, s.atom(1).sensors().position());
+      Vec3 start2 = s.sensors(2).position();
+      double apart = TestScenes.distance(start2, s.sensors(1).position());
       for (int i = 0; i < 100; i++) {
         s.push(1, new Vec3(0, 3, 1));
         s.runCycle();
-        AtomSensors a = s.atom(1).sensors();
-        AtomSensors b = s.atom(2).sensors();
+        AtomSensors a = s.sensors(1);
+        AtomSensors b = s.sensors(2);
         assertThat(TestScenes.distance(a.position(), b.position())).isCloseTo(apart, within(0.002));
         double dot =
             a.orientation().w() * b.orientation().w()
@@ -132,9 +134,9 @@ class PhysicsSanityTest {
                 + a.orientation().z() * b.orientation().z();
         assertThat(Math.abs(dot)).isGreaterThan(Math.cos(Math.toRadians(2) / 2));
       }
-      assertThat(TestScenes.distance(s.atom(2).sensors().position(), start2)).isGreaterThan(0.05);
-      assertThat(s.atom(1).sensors().leg(Leg.PX).neighbour()).hasValue(2);
-      assertThat(s.atom(2).sensors().leg(Leg.MX).neighbour()).hasValue(1);
+      assertThat(TestScenes.distance(s.sensors(2).position(), start2)).isGreaterThan(0.05);
+      assertThat(s.sensors(1).leg(Leg.PX).neighbour()).hasValue(2);
+      assertThat(s.sensors(2).leg(Leg.MX).neighbour()).hasValue(1);
     }
   }
 

@@ -1,9 +1,24 @@
 package org.armgals.maam.sim;
 
-/** Scenes the tests share. */
+import org.armgals.maam.spi.Body;
+
+/** Scenes the tests share, and the way in to an atom's physics for the tests of the physics. */
 final class TestScenes {
 
   private TestScenes() {}
+
+  /**
+   * Atom {@code id} of {@code s} in the physics' terms (leg targets as the joint's two angles): for
+   * the tests of the physics; the public way to drive an atom is {@link Simulation#body}.
+   */
+  static BodyView atom(Simulation s, int id) {
+    return ((SimulationImpl) s).view(id);
+  }
+
+  /** The atom behind a controller's {@code body}, in the physics' terms. */
+  static BodyView joints(Body body) {
+    return ((SimBody) body).atom;
+  }
 
   /** Two upright atoms in free space, +x of atom 1 facing -x of atom 2 across {@code gap} m. */
   static Scene facing(double gap, double turnDegrees, String extra) {

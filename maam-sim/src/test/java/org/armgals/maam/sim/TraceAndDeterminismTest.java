@@ -1,5 +1,6 @@
 package org.armgals.maam.sim;
 
+import static org.armgals.maam.sim.TestScenes.joints;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
@@ -30,9 +31,9 @@ class TraceAndDeterminismTest {
                 id -> {
                   SplittableRandom random = new SplittableRandom(id);
                   return (body, cycle) -> {
-                    body.setLegTarget(Leg.MZ, random.nextDouble(-0.5, 0.5), 0.2);
-                    body.send(Leg.PX, "c" + cycle);
-                    body.send(Leg.MX, "c" + cycle);
+                    joints(body).setLegTarget(Leg.MZ, random.nextDouble(-0.5, 0.5), 0.2);
+                    joints(body).send(Leg.PX, "c" + cycle);
+                    joints(body).send(Leg.MX, "c" + cycle);
                   };
                 })
             .build()) {
@@ -75,8 +76,8 @@ class TraceAndDeterminismTest {
                 id -> {
                   SplittableRandom random = new SplittableRandom(id);
                   return (body, cycle) -> {
-                    body.setLegTarget(Leg.MZ, random.nextDouble(-0.4, 0.4), 0.2);
-                    body.setLegTarget(Leg.PX, random.nextDouble(-0.5, 0.5), 0);
+                    joints(body).setLegTarget(Leg.MZ, random.nextDouble(-0.4, 0.4), 0.2);
+                    joints(body).setLegTarget(Leg.PX, random.nextDouble(-0.5, 0.5), 0);
                   };
                 })
             .build()) {

@@ -21,7 +21,7 @@ class WorldTest {
     Scene scene = Scenes.parse("gravity 0 0 0\nbox 0.36 0 1 0.1 1 1\natom 1 0 0 1");
     try (Simulation s = Simulation.builder(scene).build()) {
       s.runCycle();
-      AtomSensors sensors = s.atom(1).sensors();
+      AtomSensors sensors = s.sensors(1);
       assertThat(sensors.leg(Leg.PX).proximity()).isCloseTo(0.2, offset(1e-6));
       assertThat(sensors.leg(Leg.MX).proximity()).isEqualTo(scene.params().proximityRange());
     }
@@ -32,8 +32,8 @@ class WorldTest {
     Scene scene = Scenes.parse("box 0 0 0.05 0.4 0.4 0.1\natom 1 0 0 0.2 tripod");
     try (Simulation s = Simulation.builder(scene).build()) {
       s.runFor(Duration.ofSeconds(1));
-      assertThat(s.atom(1).sensors().position().z()).isBetween(0.15, 0.18);
-      assertThat(s.atom(1).sensors().leg(Leg.MZ).tipContact()).isTrue();
+      assertThat(s.sensors(1).position().z()).isBetween(0.15, 0.18);
+      assertThat(s.sensors(1).leg(Leg.MZ).tipContact()).isTrue();
     }
   }
 
@@ -44,7 +44,7 @@ class WorldTest {
     try (Simulation s = Simulation.builder(scene).legDynamics(dynamics).build()) {
       s.runFor(Duration.ofSeconds(1));
       // Alone on the ground its kernel would be 0.07 m up; on the other atom it is at least 0.12.
-      assertThat(s.atom(2).sensors().position().z()).isGreaterThan(0.12);
+      assertThat(s.sensors(2).position().z()).isGreaterThan(0.12);
     }
   }
 
@@ -55,8 +55,8 @@ class WorldTest {
     Scene scene = Scenes.parse("gravity 0 0 0\natom 1 0 0 1\natom 2 0.3 0 1");
     try (Simulation s = Simulation.builder(scene).legDynamics(dynamics).build()) {
       s.runCycles(2);
-      assertThat(s.atom(1).sensors().leg(Leg.PX).proximity()).isCloseTo(0.08, offset(1e-6));
-      assertThat(s.atom(2).sensors().leg(Leg.MX).proximity()).isCloseTo(0.08, offset(1e-6));
+      assertThat(s.sensors(1).leg(Leg.PX).proximity()).isCloseTo(0.08, offset(1e-6));
+      assertThat(s.sensors(2).leg(Leg.MX).proximity()).isCloseTo(0.08, offset(1e-6));
     }
   }
 
@@ -65,7 +65,7 @@ class WorldTest {
     try (Simulation s = Simulation.builder(Scenes.builtIn("pipe")).build()) {
       s.runFor(Duration.ofSeconds(1));
       for (int id : s.atomIds()) {
-        Vec3 p = s.atom(id).sensors().position();
+        Vec3 p = s.sensors(id).position();
         assertThat(p.z()).as("atom %d height", id).isGreaterThan(0.13);
         assertThat(Math.abs(p.y())).as("atom %d off the axis", id).isLessThan(0.16);
       }

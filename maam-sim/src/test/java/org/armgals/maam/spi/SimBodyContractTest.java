@@ -1,10 +1,15 @@
 package org.armgals.maam.spi;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
 import org.armgals.maam.sim.LegDynamics;
 import org.armgals.maam.sim.Scenes;
 import org.armgals.maam.sim.Simulation;
+import org.armgals.maam.sim.spi.Controller;
 import org.junit.jupiter.api.Test;
 
 /** The framework's body SPI contract, held against the simulator's atoms (jointed legs). */
@@ -26,6 +31,45 @@ class SimBodyContractTest extends BodyContract {
             .build();
     s.runCycle();
     return s.body(Integer.parseInt(id.substring(1)));
+  }
+
+  @Test
+  void eachControllerIsHandedTheBodyTheSimulationGivesForItsAtom() {
+    List<String> handed = new ArrayList<>();
+    List<Body> bodies = new ArrayList<>();
+    try (Simulation s =
+        Simulation.builder(Scenes.parse("gravity 0 0 0\natom 1 0 0 1\natom 2 1 0 1"))
+            .legDynamics(dynamics())
+            .controllers(
+                id ->
+                    (body, cycle) -> {
+                      handed.add(id + ":" + body.id() + "@" + cycle);
+                      bodies.add(body);
+                    })
+            .build()) {
+      s.runCycles(2);
+      assertThat(handed).containsExactly("1:a1@0", "2:a2@0", "1:a1@1", "2:a2@1");
+      assertThat(bodies.get(0)).isSameAs(s.body(1)).isSameAs(bodies.get(2));
+      assertThat(bodies.get(1)).isSameAs(s.body(2)).isSameAs(bodies.get(3));
+    }
+  }
+
+  @Test
+  void aDrivingControllerStepsItsRobotAndRefusesAnotherAtomsBody() {
+    try (Simulation s =
+        Simulation.builder(Scenes.parse("gravity 0 0 0\natom 1 0 0 1\natom 2 1 0 1"))
+            .legDynamics(dynamics())
+            .build()) {
+      AtomicInteger steps = new AtomicInteger();
+      s.setController(1, Controller.driving(s.body(1), steps::incrementAndGet));
+      s.runCycles(3);
+      assertThat(steps).hasValue(3);
+      s.setController(2, Controller.driving(s.body(1), steps::incrementAndGet));
+      assertThatThrownBy(s::runCycle)
+          .isInstanceOf(IllegalStateException.class)
+          .hasMessageContaining("handed body a2")
+          .hasMessageContaining("built on body a1");
+    }
   }
 
   @Test
