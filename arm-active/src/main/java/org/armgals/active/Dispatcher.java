@@ -36,13 +36,20 @@ final class Dispatcher {
   static final long MAX_SPIN_NANOS = 200_000;
 
   /**
-   * The shortest spin. Spinning adapts per worker: a spin that finds work doubles the next one, a
-   * spin that finds nothing halves it, so a worker that has nothing to do stops taking the core
-   * from the threads that do (on a small machine, an outside sender is one of them). A worker woken
-   * for work from another runtime within {@link #MAX_SPIN_NANOS} of parking spins twice as long as
-   * its failed spin next time (decision 0033).
+   * The shortest spin. Spinning adapts per worker ({@link AdaptiveSpin}, the worker's idle
+   * strategy): a spin that finds work doubles the next one, a spin that finds nothing halves it, so
+   * a worker that has nothing to do stops taking the core from the threads that do (on a small
+   * machine, an outside sender is one of them). A worker woken for work from another runtime within
+   * {@link #MAX_SPIN_NANOS} of parking spins twice as long as its failed spin next time (decision
+   * 0033).
    */
   static final long MIN_SPIN_NANOS = 5_000;
+
+  /**
+   * The looks at the run queue an idle worker makes between two steps of its {@link AdaptiveSpin}
+   * (each step reads the clock): the loop keeps its counter in a register.
+   */
+  static final int SPIN_BATCH = 32;
 
   /** A worker handing objects to itself reads the clock once per this many + 1 hand-overs. */
   static final int HANDOFF_CHECK_MASK = 63;
@@ -68,11 +75,8 @@ final class Dispatcher {
     volatile boolean running;
     volatile @Nullable Core<?> next;
 
-    /** This worker's current spin length; read and written by the worker only. */
-    long spinNanos = MAX_SPIN_NANOS / 4;
-
-    /** The length of this worker's last spin that found nothing; the worker's only. */
-    long lastFailedSpin = MIN_SPIN_NANOS;
+    /** How this worker spins on the run queue before it parks; the worker's only. */
+    final AdaptiveSpin idle;
 
     /**
      * Whether this worker holds one unit of {@code spinning}: taken while its object lingers for
@@ -95,6 +99,9 @@ final class Dispatcher {
 
     Worker(Dispatcher dispatcher) {
       this.dispatcher = dispatcher;
+      this.idle =
+          new AdaptiveSpin(
+              dispatcher.runtime.timeSource(), MIN_SPIN_NANOS, MAX_SPIN_NANOS, MAX_SPIN_NANOS / 4);
     }
   }
 
@@ -347,11 +354,11 @@ final class Dispatcher {
           parkIdle(w);
           if (w.wokenForInbound) {
             w.wokenForInbound = false;
-            if (runtime.timeSource().nanoTime() - parkedAt < MAX_SPIN_NANOS) {
-              // Work from another runtime came within the longest spin, after a wake-up that is
-              // on its round trip's path: a longer spin would have found it (decision 0033).
-              w.spinNanos = Math.min(MAX_SPIN_NANOS, w.lastFailedSpin * 2);
-            }
+            // Work from another runtime, after a wake-up that is on its round trip's path: if it
+            // came within the longest spin, a longer spin would have found it (decision 0033).
+            w.idle.blockedFor(runtime.timeSource().nanoTime() - parkedAt);
+          } else {
+            w.idle.reset();
           }
           continue;
         }
@@ -395,31 +402,21 @@ final class Dispatcher {
       return runQueue.poll();
     }
     try {
-      TimeSource time = runtime.timeSource();
-      long budget = self.spinNanos;
-      long start = time.nanoTime();
-      long stealFrom = start + budget - budget / 4;
-      long end = start + budget;
-      long now = start;
-      for (int i = 1; !terminated; i++) {
-        Thread.onSpinWait();
-        Core<?> c = runQueue.poll();
-        if (c == null && now >= stealFrom) {
-          c = steal(self);
-        }
-        if (c != null) {
-          self.spinNanos = Math.min(MAX_SPIN_NANOS, budget * 2);
-          return c;
-        }
-        if ((i & 31) == 0) {
-          now = time.nanoTime();
-          if (now >= end) {
-            break;
+      AdaptiveSpin idle = self.idle;
+      while (!terminated && idle.spin()) { // a step of the strategy: a batch of looks
+        boolean late = idle.late();
+        for (int i = 0; i < SPIN_BATCH; i++) {
+          Thread.onSpinWait();
+          Core<?> c = runQueue.poll();
+          if (c == null && late) {
+            c = steal(self);
+          }
+          if (c != null) {
+            idle.reset(); // found while spinning: the next spin is longer
+            return c;
           }
         }
       }
-      self.spinNanos = Math.max(MIN_SPIN_NANOS, budget / 2);
-      self.lastFailedSpin = budget;
       return null;
     } finally {
       spinning.decrementAndGet();

@@ -96,6 +96,17 @@ public final class BackoffIdleStrategy implements IdleStrategy {
 
   @Override
   public void idle() {
+    if (spin()) {
+      return;
+    }
+    long nanos = parkNanos;
+    parkNanos = nanos <= maxParkNanos / 2 ? nanos * 2 : maxParkNanos;
+    park(nanos);
+  }
+
+  /** A step of spinning or yielding while either phase has steps left; false once it would park. */
+  @Override
+  public boolean spin() {
     if (phase == Phase.NOT_IDLE) {
       phase = Phase.SPINNING;
       steps = 0;
@@ -104,7 +115,7 @@ public final class BackoffIdleStrategy implements IdleStrategy {
       if (steps < maxSpins) {
         steps++;
         Thread.onSpinWait();
-        return;
+        return true;
       }
       phase = Phase.YIELDING;
       steps = 0;
@@ -113,14 +124,12 @@ public final class BackoffIdleStrategy implements IdleStrategy {
       if (steps < maxYields) {
         steps++;
         Thread.yield();
-        return;
+        return true;
       }
       phase = Phase.PARKING;
       parkNanos = minParkNanos;
     }
-    long nanos = parkNanos;
-    parkNanos = nanos <= maxParkNanos / 2 ? nanos * 2 : maxParkNanos;
-    park(nanos);
+    return false;
   }
 
   private void park(long nanos) {

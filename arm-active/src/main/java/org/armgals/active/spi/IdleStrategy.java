@@ -43,6 +43,27 @@ public interface IdleStrategy {
   void reset();
 
   /**
+   * One step of a wait whose caller blocks its own way once spinning is over: a thread that parks
+   * until another hands it work, after a handshake with that other thread that a strategy cannot
+   * make for it (announce itself, look for work once more, then park). While the strategy would
+   * spin (or yield), this does one such step and returns {@code true}: the caller looks for work
+   * again. Once the strategy would park, it returns {@code false} at once, without parking, and
+   * keeps returning {@code false} until {@link #reset()}: the caller blocks now. A caller that
+   * finds work calls {@link #reset()}, so a strategy learns whether its spins find work.
+   *
+   * <pre>{@code
+   * while (strategy.spin()) {
+   *   if (tryTakeWork()) { strategy.reset(); return; }
+   * }
+   * blockUntilHandedWork(); // the caller's own park and handshake
+   * strategy.reset();
+   * }</pre>
+   *
+   * @return true to look for work again, false to block now
+   */
+  boolean spin();
+
+  /**
    * Spins {@code maxSpins} steps, then yields {@code maxYields} steps, then parks, first for {@code
    * minPark} and twice as long at each step up to {@code maxPark}. See {@link BackoffIdleStrategy}.
    */
