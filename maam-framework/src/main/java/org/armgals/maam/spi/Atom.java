@@ -88,6 +88,10 @@ public final class Atom {
 
   /** Every sensor of an atom, legs first in {@link Leg} order, then tilt, battery and inbox. */
   public static Set<SensorKey<?>> sensors() {
+    return All.SENSORS;
+  }
+
+  private static Set<SensorKey<?>> allSensors() {
     Set<SensorKey<?>> all = new LinkedHashSet<>();
     for (Leg leg : Leg.values()) {
       all.add(angles(leg));
@@ -103,6 +107,19 @@ public final class Atom {
 
   /** Every actuator of an atom, legs first in {@link Leg} order, then send. */
   public static Set<ActuatorKey<?>> actuators() {
+    return All.ACTUATORS;
+  }
+
+  /**
+   * The sets of every sensor and actuator, made once: a body checks each command against them,
+   * every cycle.
+   */
+  private static final class All {
+    static final Set<SensorKey<?>> SENSORS = allSensors();
+    static final Set<ActuatorKey<?>> ACTUATORS = allActuators();
+  }
+
+  private static Set<ActuatorKey<?>> allActuators() {
     Set<ActuatorKey<?>> all = new LinkedHashSet<>();
     for (Leg leg : Leg.values()) {
       all.add(target(leg));
