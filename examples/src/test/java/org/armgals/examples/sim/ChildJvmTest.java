@@ -7,6 +7,7 @@ import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.FileSystems;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
@@ -55,6 +56,9 @@ class ChildJvmTest {
 
   @Test
   void niceIsFoundInTheDirectoriesOfThePathOnlyAsAnExecutableFile() throws IOException {
+    assumeTrue(
+        FileSystems.getDefault().supportedFileAttributeViews().contains("posix"),
+        "makes a file executable the POSIX way");
     Path empty = Files.createDirectories(dir.resolve("empty"));
     Path plain = Files.createDirectories(dir.resolve("plain"));
     Files.writeString(plain.resolve("nice"), "not executable");
