@@ -6,7 +6,7 @@ import org.armgals.active.spi.IdleStrategy;
 
 /**
  * The dispatcher's {@link IdleStrategy}: how an idle worker spins on the run queue before it parks
- * in the idle list (decisions 0002, 0033, 0060). Each wait spins for a time of its own, between a
+ * in the idle list (decisions 0002, 0033, 0072). Each wait spins for a time of its own, between a
  * shortest and a longest spin:
  *
  * <ul>
