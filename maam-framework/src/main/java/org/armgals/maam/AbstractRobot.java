@@ -575,9 +575,9 @@ public abstract class AbstractRobot implements Entity {
 
   /** Every module in schedule order, then the body's end of cycle. */
   private void react() {
-    long number = ++cycles;
+    cycles++;
     long now = time.nanoTime();
-    plan().run(number, now, body, failures);
+    plan().run(now, body, failures);
     body.endCycle();
   }
 

@@ -30,9 +30,9 @@ import org.jspecify.annotations.Nullable;
  * <p>What it measures is MAAM's own cost per cycle, maam-framework's compiled plan: the robot is
  * stepped by hand on the measuring thread, not released by an island, so no arm-gals code (no
  * island, release, entity or trace) runs in it. Both sides call the same modules, which allocate
- * their signals and read a body; the robot adds, per module, the lookup of its ports, the stamps
- * that make a signal belong to its cycle, the check of an emitted signal's type and the connectors'
- * bookkeeping, and per cycle its clock reading, the body's end of cycle and the adaptation point.
+ * their signals and read a body, and both empty the modules' outputs in each cycle before they run;
+ * the robot adds, per module, the dispatch on its kind, the lookup of its ports, the check of an
+ * emitted signal's type and the connectors' bookkeeping, and per cycle its clock reading.
  *
  * <p>Rounds of {@value #CYCLES} cycles alternate the two, robot first, timed in the measuring
  * thread's CPU time. The first rounds warm up, until both {@value #WARMUP_ROUNDS} rounds and {@code
