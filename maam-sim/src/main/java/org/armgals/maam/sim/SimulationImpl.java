@@ -149,10 +149,8 @@ final class SimulationImpl implements Simulation {
       throw new IllegalStateException("simulation of scene '" + scene.name() + "' is closed");
     }
     long start = timeNanos;
+    // Sensing empties the inboxes too.
     senseAll();
-    for (AtomModel atom : atoms) {
-      atom.inbox.clear();
-    }
     messages.deliver(start);
     bindLockedTips();
     for (AtomModel atom : atoms) {
@@ -164,11 +162,7 @@ final class SimulationImpl implements Simulation {
     for (int i = 0; i < stepsPerCycle; i++) {
       servoed = physicsStep(servoed, i == stepsPerCycle - 1);
     }
-    for (AtomModel atom : atoms) {
-      atom.pushX = 0;
-      atom.pushY = 0;
-      atom.pushZ = 0;
-    }
+    // The last step's drain took back the pushes.
     if (trace != null) {
       List<BodyView> readings = new ArrayList<>(atoms.size());
       for (AtomModel atom : atoms) {
@@ -213,7 +207,7 @@ final class SimulationImpl implements Simulation {
     timeNanos += stepNanos;
     // With no binding now, none breaks after the pass: the next step follows none either.
     boolean servoNext = !last && bindings.isEmpty();
-    lanes.forEach(atoms.size(), servoNext ? drainServoPass : drainPass);
+    lanes.forEach(atoms.size(), servoNext ? drainServoPass : last ? drainLastPass : drainPass);
     for (int i = 0; i < atoms.size(); i++) {
       if (emptied[i]) {
         events.add(new SimEvent.BatteryEmpty(timeNanos, atoms.get(i).id));
@@ -246,6 +240,7 @@ final class SimulationImpl implements Simulation {
   private final IntConsumer preparePass = this::prepare;
   private final IntConsumer drainPass = this::drain;
   private final IntConsumer drainServoPass = this::drainServo;
+  private final IntConsumer drainLastPass = this::drainLast;
   private final IntConsumer aimPass = this::aim;
   private final IntConsumer sensePass = this::sense;
 
@@ -274,6 +269,15 @@ final class SimulationImpl implements Simulation {
     AtomModel atom = atoms.get(i);
     atom.stepped();
     emptied[i] = atom.drain(dt);
+  }
+
+  /** The last step's drain of atom {@code i}: the cycle's pushes on it end with its servos. */
+  private void drainLast(int i) {
+    drain(i);
+    AtomModel atom = atoms.get(i);
+    atom.pushX = 0;
+    atom.pushY = 0;
+    atom.pushZ = 0;
   }
 
   /** Atom {@code i}'s {@link #drain}, then its {@link #servo} for the next step. */
@@ -318,9 +322,13 @@ final class SimulationImpl implements Simulation {
     }
   }
 
-  /** Reads atom {@code i}'s sensors, and starts its tips' contacts of the next period afresh. */
+  /**
+   * Reads atom {@code i}'s sensors, starts its tips' contacts of the next period afresh, and
+   * empties its inbox for the messages of the cycle.
+   */
   private void sense(int i) {
     AtomModel atom = atoms.get(i);
+    atom.inbox.clear();
     BodyView view = bodies.get(atom.id);
     view.sensors = sense(atom, view.joints);
     for (LegModel leg : atom.legs) {
