@@ -287,9 +287,9 @@ final class SimulationImpl implements Simulation {
   }
 
   /**
-   * The sensing pass. On one lane it goes over the atoms twice, not thrice (decision 0073): each
-   * atom is aimed and filed for the rays at once, and read as soon as its own rays are cast. On
-   * more, the engine's work (cleaning, casting) stays on this thread, between passes.
+   * The sensing pass. On one lane it goes over the atoms twice, not four times (decision 0073):
+   * each atom is aimed and filed for the rays at once, and read as soon as its own rays are cast.
+   * On more, the engine's work (cleaning, casting) stays on this thread, between passes.
    */
   private void senseAll() {
     if (lanes.lanes() == 1) {
