@@ -3,6 +3,8 @@ package org.armgals.maam.sim;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.function.IntConsumer;
+import org.armgals.maam.spi.Leg;
 import org.jspecify.annotations.Nullable;
 import org.ode4j.ode.DGeom;
 import org.ode4j.ode.DRay;
@@ -185,47 +187,120 @@ final class BroadPhase {
   void castRays(List<AtomModel> atoms) {
     clean();
     for (AtomModel atom : atoms) {
-      for (LegModel leg : atom.legs) {
-        if (leg.aimed) {
-          castRay(leg);
+      castRays(atom);
+    }
+  }
+
+  /**
+   * Starts the sensing pass on {@code atom} alone: cleans its parts and files its box; once every
+   * atom is filed, {@link #castRays(List, IntConsumer)} casts the rays.
+   */
+  void file(AtomModel atom) {
+    atom.parts.clean();
+    atom.parts.box(boxes, 6 * atom.index);
+  }
+
+  /**
+   * As {@link #castRays(List)}, every atom {@link #file filed}, handing each atom's index to {@code
+   * cast} as soon as its own rays are cast: casting a ray writes only its own leg's proximity, so
+   * what the atom senses is then known, and can be read while the atom is at hand.
+   */
+  void castRays(List<AtomModel> atoms, IntConsumer cast) {
+    grid.rebuild(boxes, atoms.size());
+    for (int i = 0; i < atoms.size(); i++) {
+      castRays(atoms.get(i));
+      cast.accept(i);
+    }
+  }
+
+  /**
+   * Casts {@code atom}'s aimed rays. The grid is asked once, with a box around all of them, for the
+   * other atoms they may reach; each ray then tries those its own box overlaps, the very atoms the
+   * grid would give it (a ray keeps the nearest of its hits, so the order they are tried in does
+   * not matter).
+   */
+  private void castRays(AtomModel atom) {
+    LegModel[] legs = atom.legs;
+    boolean any = false;
+    for (int l = 0; l < legs.length; l++) {
+      LegModel leg = legs[l];
+      if (!leg.aimed) {
+        continue;
+      }
+      Boxes.copy(leg.ray.getAABB(), rayBoxes, 6 * l);
+      if (!any) {
+        System.arraycopy(rayBoxes, 6 * l, reachBox, 0, 6);
+        any = true;
+      } else {
+        for (int axis = 0; axis < 3; axis++) {
+          reachBox[2 * axis] = Math.min(reachBox[2 * axis], rayBoxes[6 * l + 2 * axis]);
+          reachBox[2 * axis + 1] = Math.max(reachBox[2 * axis + 1], rayBoxes[6 * l + 2 * axis + 1]);
         }
+      }
+    }
+    if (!any) {
+      return;
+    }
+    reached = 0;
+    casting = atom;
+    grid.forEachOverlapping(reachBox, reach);
+    for (int l = 0; l < legs.length; l++) {
+      if (legs[l].aimed) {
+        castRay(legs[l], 6 * l);
       }
     }
   }
 
-  private void castRay(LegModel leg) {
+  /** {@code leg}'s ray, its box at {@code at} in {@link #rayBoxes}. */
+  private void castRay(LegModel leg, int at) {
     DRay ray = leg.ray;
-    Boxes.copy(ray.getAABB(), rayBox, 0);
+    System.arraycopy(rayBoxes, at, rayBox, 0, 6);
     for (int g = 0; g < ground.geoms.size(); g++) {
       if (ground.overlaps(g, rayBox, 0)) {
         near.call(null, ray, ground.geoms.get(g));
       }
     }
-    casting = leg;
-    grid.forEachOverlapping(rayBox, rayNear);
+    double range = leg.atom.params.proximityRange();
+    for (int k = 0; k < reached; k++) {
+      int a = reachedAtoms[k];
+      if (Boxes.overlap(boxes, 6 * a, rayBox, 0)
+          && !Boxes.segmentMisses(boxes, 6 * a, leg.aim, range)) {
+        collideParts(atoms.get(a), ray, rayBox, leg.aim, range);
+      }
+    }
   }
 
-  /** The leg whose ray is being cast, and the ray's box. */
-  private @Nullable LegModel casting;
+  /** The atom whose rays are being cast. */
+  private @Nullable AtomModel casting;
 
+  /** Its rays' boxes, leg l's at 6l, and a box around them all. */
+  private final double[] rayBoxes = new double[6 * Leg.values().length];
+
+  private final double[] reachBox = new double[6];
+
+  /** The ray being cast's box. */
   private final double[] rayBox = new double[6];
-  private final AtomGrid.AtomVisitor rayNear = this::rayNear;
 
-  private void rayNear(int a) {
-    AtomModel atom = atoms.get(a);
-    LegModel leg = casting;
-    if (leg != null
-        && atom != leg.atom
-        && !Boxes.segmentMisses(boxes, 6 * a, leg.aim, leg.atom.params.proximityRange())) {
-      collideParts(atom, leg.ray, rayBox, leg.aim, leg.atom.params.proximityRange());
+  /** The other atoms whose boxes overlap {@link #reachBox}, in the grid's order. */
+  private int[] reachedAtoms = new int[8];
+
+  private int reached;
+  private final AtomGrid.AtomVisitor reach = this::reach;
+
+  private void reach(int a) {
+    if (atoms.get(a) == casting) {
+      return;
     }
+    if (reached == reachedAtoms.length) {
+      reachedAtoms = Arrays.copyOf(reachedAtoms, 2 * reached);
+    }
+    reachedAtoms[reached++] = a;
   }
 
   /** Starts the sensing pass: cleans every atom's parts and files their boxes. */
   private void clean() {
     for (AtomModel atom : atoms) {
-      atom.parts.clean();
-      atom.parts.box(boxes, 6 * atom.index);
+      file(atom);
     }
     grid.rebuild(boxes, atoms.size());
   }

@@ -77,8 +77,23 @@ final class KinematicParts implements Parts {
 
   @Override
   public boolean legMayTouch(LegModel leg, Ground ground) {
-    return ground.touches(reaches(), 6 * leg.leg.ordinal());
+    double[] reaches = reaches();
+    int bit = 1 << leg.leg.ordinal();
+    if ((groundKnown & bit) == 0) {
+      // Asked each step of a resting atom with a turning leg: the answer holds while the kernel
+      // does not move (the ground is its simulation's one, which does not move either).
+      if (ground.touches(reaches, 6 * leg.leg.ordinal())) {
+        groundTouched |= bit;
+      }
+      groundKnown |= bit;
+    }
+    return (groundTouched & bit) != 0;
   }
+
+  /** A bit per leg: whether its cone box's overlap with the ground is known, and whether it is. */
+  private int groundKnown;
+
+  private int groundTouched;
 
   /**
    * The legs' cone boxes in the world: each box's centre placed by the kernel's pose, its half
@@ -113,6 +128,8 @@ final class KinematicParts implements Parts {
         }
       }
       reachesKnown = true;
+      groundKnown = 0;
+      groundTouched = 0;
     }
     return reaches;
   }

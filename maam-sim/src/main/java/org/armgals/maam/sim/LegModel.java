@@ -1,6 +1,7 @@
 package org.armgals.maam.sim;
 
 import org.armgals.maam.spi.Leg;
+import org.armgals.maam.spi.LegAngles;
 import org.jspecify.annotations.Nullable;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
@@ -72,6 +73,30 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
     target1 = fitted[0];
     target2 = fitted[1];
     powered = true;
+  }
+
+  /** The joint's angles of the last {@link #angles} asked for, and what they convert to. */
+  private long readAngle1;
+
+  private long readAngle2;
+  private @Nullable LegAngles read;
+
+  /**
+   * {@link JointAngles#legAngles} of the joint's angles {@code (a1, a2)}, converted again only if
+   * they are not those of the last reading (bit for bit): a leg that did not turn reads the very
+   * same value (two arc tangents, a hypotenuse and four sines and cosines saved).
+   */
+  final LegAngles angles(double a1, double a2) {
+    long bits1 = Double.doubleToRawLongBits(a1);
+    long bits2 = Double.doubleToRawLongBits(a2);
+    LegAngles last = read;
+    if (last == null || bits1 != readAngle1 || bits2 != readAngle2) {
+      last = JointAngles.legAngles(a1, a2);
+      read = last;
+      readAngle1 = bits1;
+      readAngle2 = bits2;
+    }
+    return last;
   }
 
   /** The joint's first angle (rad). */

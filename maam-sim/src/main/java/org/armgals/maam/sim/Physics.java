@@ -3,6 +3,7 @@ package org.armgals.maam.sim;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.IntConsumer;
 import org.jspecify.annotations.Nullable;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
@@ -114,6 +115,24 @@ final class Physics {
     } finally {
       ENGINE.unlock();
     }
+  }
+
+  /**
+   * As {@link #castRays(List)}, on one thread that has {@link BroadPhase#file filed} every atom,
+   * handing each atom's index to {@code cast} once its rays are cast.
+   */
+  void castRays(List<AtomModel> atoms, IntConsumer cast) {
+    ENGINE.lock();
+    try {
+      broadPhase.castRays(atoms, cast);
+    } finally {
+      ENGINE.unlock();
+    }
+  }
+
+  /** Files {@code atom} for a sensing pass: see {@link BroadPhase#file}. */
+  void file(AtomModel atom) {
+    broadPhase.file(atom);
   }
 
   /**

@@ -149,10 +149,8 @@ final class SimulationImpl implements Simulation {
       throw new IllegalStateException("simulation of scene '" + scene.name() + "' is closed");
     }
     long start = timeNanos;
+    // Sensing empties the inboxes too.
     senseAll();
-    for (AtomModel atom : atoms) {
-      atom.inbox.clear();
-    }
     messages.deliver(start);
     bindLockedTips();
     for (AtomModel atom : atoms) {
@@ -160,14 +158,11 @@ final class SimulationImpl implements Simulation {
         controllers.get(atom.id).onCycle(bodies.get(atom.id).body, cycle);
       }
     }
+    boolean servoed = false;
     for (int i = 0; i < stepsPerCycle; i++) {
-      physicsStep();
+      servoed = physicsStep(servoed, i == stepsPerCycle - 1);
     }
-    for (AtomModel atom : atoms) {
-      atom.pushX = 0;
-      atom.pushY = 0;
-      atom.pushZ = 0;
-    }
+    // The last step's drain took back the pushes.
     if (trace != null) {
       List<BodyView> readings = new ArrayList<>(atoms.size());
       for (AtomModel atom : atoms) {
@@ -185,11 +180,20 @@ final class SimulationImpl implements Simulation {
    * One physics step. Each pass over the atoms does all it can for an atom at once (with a thousand
    * atoms, each pass reads them from memory afresh), on the {@link Lanes}; what must go in order
    * (bindings, contacts, the solver, events) goes on this thread between passes.
+   *
+   * <p>Unless {@code last}, a step without bindings runs the next step's servos in the same pass as
+   * its own drain, atom by atom, saving a pass (decision 0073; {@code servoed} says the last step
+   * did, and the result whether this one did): an atom's drain and servos read and write that atom
+   * alone, and between the two passes there would only be the step's events, which read no atom.
+   * Bindings are made and released only between cycles, but they break between the passes, and a
+   * bound leg's servo reads the other atom: with any binding the passes stay apart.
    */
-  private void physicsStep() {
+  private boolean physicsStep(boolean servoed, boolean last) {
     // Bindings re-fix their joints after both legs' servos and before collisions.
     following = !bindings.isEmpty();
-    lanes.forEach(atoms.size(), servoPass);
+    if (!servoed) {
+      lanes.forEach(atoms.size(), servoPass);
+    }
     if (following) {
       for (Binding binding : bindings) {
         binding.follow();
@@ -201,7 +205,9 @@ final class SimulationImpl implements Simulation {
       binding.loadLegs();
     }
     timeNanos += stepNanos;
-    lanes.forEach(atoms.size(), drainPass);
+    // With no binding now, none breaks after the pass: the next step follows none either.
+    boolean servoNext = !last && bindings.isEmpty();
+    lanes.forEach(atoms.size(), servoNext ? drainServoPass : last ? drainLastPass : drainPass);
     for (int i = 0; i < atoms.size(); i++) {
       if (emptied[i]) {
         events.add(new SimEvent.BatteryEmpty(timeNanos, atoms.get(i).id));
@@ -225,6 +231,7 @@ final class SimulationImpl implements Simulation {
                 force));
       }
     }
+    return servoNext;
   }
 
   private boolean following;
@@ -232,6 +239,8 @@ final class SimulationImpl implements Simulation {
   private final IntConsumer servoPass = this::servo;
   private final IntConsumer preparePass = this::prepare;
   private final IntConsumer drainPass = this::drain;
+  private final IntConsumer drainServoPass = this::drainServo;
+  private final IntConsumer drainLastPass = this::drainLast;
   private final IntConsumer aimPass = this::aim;
   private final IntConsumer sensePass = this::sense;
 
@@ -262,7 +271,35 @@ final class SimulationImpl implements Simulation {
     emptied[i] = atom.drain(dt);
   }
 
+  /** The last step's drain of atom {@code i}: the cycle's pushes on it end with its servos. */
+  private void drainLast(int i) {
+    drain(i);
+    AtomModel atom = atoms.get(i);
+    atom.pushX = 0;
+    atom.pushY = 0;
+    atom.pushZ = 0;
+  }
+
+  /** Atom {@code i}'s {@link #drain}, then its {@link #servo} for the next step. */
+  private void drainServo(int i) {
+    drain(i);
+    servo(i);
+  }
+
+  /**
+   * The sensing pass. On one lane it goes over the atoms twice, not four times (decision 0073):
+   * each atom is aimed and filed for the rays at once, and read as soon as its own rays are cast.
+   * On more, the engine's work (cleaning, casting) stays on this thread, between passes.
+   */
   private void senseAll() {
+    if (lanes.lanes() == 1) {
+      for (int i = 0; i < atoms.size(); i++) {
+        aim(i);
+        physics.file(atoms.get(i));
+      }
+      physics.castRays(atoms, sensePass);
+      return;
+    }
     lanes.forEach(atoms.size(), aimPass);
     physics.castRays(atoms);
     lanes.forEach(atoms.size(), sensePass);
@@ -285,9 +322,13 @@ final class SimulationImpl implements Simulation {
     }
   }
 
-  /** Reads atom {@code i}'s sensors, and starts its tips' contacts of the next period afresh. */
+  /**
+   * Reads atom {@code i}'s sensors, starts its tips' contacts of the next period afresh, and
+   * empties its inbox for the messages of the cycle.
+   */
   private void sense(int i) {
     AtomModel atom = atoms.get(i);
+    atom.inbox.clear();
     BodyView view = bodies.get(atom.id);
     view.sensors = sense(atom, view.joints);
     for (LegModel leg : atom.legs) {
@@ -328,7 +369,7 @@ final class SimulationImpl implements Simulation {
         legs.add(
             new LegSensors(
                 l,
-                JointAngles.legAngles(a1, a2),
+                leg.angles(a1, a2),
                 leg.torque1,
                 leg.torque2,
                 leg.contact,
