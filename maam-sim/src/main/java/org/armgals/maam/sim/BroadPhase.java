@@ -81,8 +81,7 @@ final class BroadPhase {
   void prepare(AtomModel atom) {
     int i = atom.index;
     atom.beforeCollisions();
-    atom.parts.clean();
-    atom.parts.box(boxes, 6 * i);
+    file(atom);
     joined[i] = false;
     boolean rests = !atom.still && restsOnTheGround(atom);
     quiet[i] = atom.still || rests;
@@ -192,8 +191,9 @@ final class BroadPhase {
   }
 
   /**
-   * Starts the sensing pass on {@code atom} alone: cleans its parts and files its box; once every
-   * atom is filed, {@link #castRays(List, IntConsumer)} casts the rays.
+   * Cleans {@code atom}'s parts and files its box: the start of a step's collisions ({@link
+   * #prepare}) and of a sensing pass, where once every atom is filed {@link #castRays(List,
+   * IntConsumer)} casts the rays.
    */
   void file(AtomModel atom) {
     atom.parts.clean();
