@@ -3,7 +3,10 @@ package org.armgals.maam;
 import static java.util.Objects.requireNonNull;
 
 import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 
 /** {@link MetaRobot}: computes the new program and its schedule before replacing the old one. */
@@ -45,6 +48,8 @@ final class MetaRobotImpl implements MetaRobot {
    * @throws IllegalArgumentException an unknown or duplicate name, a module change of another kind
    *     or other ports, a connector the scheduler refuses, or an input fed twice
    * @throws CycleException the program would have a cycle
+   * @throws IllegalStateException a custom scheduler returned a schedule that breaks its contract
+   *     (see {@link #checkSchedule})
    */
   void apply(ProgramChange.Change adaptation) {
     requireNonNull(adaptation, "adaptation");
@@ -88,6 +93,9 @@ final class MetaRobotImpl implements MetaRobot {
       }
     }
     Schedule newSchedule = scheduler.schedule(newSchemas, newConnectors);
+    if (scheduler != TopologicalScheduler.INSTANCE) {
+      checkSchedule(newSchedule, newSchemas, newConnectors);
+    }
     schemas = List.copyOf(newSchemas);
     connectors = List.copyOf(newConnectors);
     schedule = newSchedule;
@@ -142,6 +150,70 @@ final class MetaRobotImpl implements MetaRobot {
       case Reactor r -> "reactor";
       case Actuator a -> "actuator";
     };
+  }
+
+  /**
+   * Checks what a custom scheduler returned against {@link Schedule}'s contract: every module of
+   * the program once (the program's own instance), and the source of every wire and connector
+   * before its target. A schedule that broke it would have a module read an input before its
+   * producer wrote it this cycle, silently a cycle late. The built-in scheduler is not checked: its
+   * property tests hold it to the contract.
+   */
+  private void checkSchedule(Schedule s, List<Schema> schemas, List<Connector> connectors) {
+    Map<String, BehaviorModule> program = new LinkedHashMap<>();
+    for (Schema schema : schemas) {
+      for (BehaviorModule module : schema.modules()) {
+        program.put(module.name(), module);
+      }
+    }
+    Map<String, Integer> position = new HashMap<>();
+    List<BehaviorModule> order = s.modules();
+    for (int i = 0; i < order.size(); i++) {
+      BehaviorModule module = order.get(i);
+      if (program.get(module.name()) != module) {
+        throw badSchedule(s, "module '" + module.name() + "' is not one of the program's");
+      }
+      if (position.putIfAbsent(module.name(), i) != null) {
+        throw badSchedule(s, "module '" + module.name() + "' is scheduled twice");
+      }
+    }
+    if (position.size() != program.size()) {
+      List<String> missing = new ArrayList<>(program.keySet());
+      missing.removeAll(position.keySet());
+      throw badSchedule(s, "modules " + missing + " are not scheduled");
+    }
+    for (Schema schema : schemas) {
+      for (Wire wire : schema.wires()) {
+        checkOrder(s, position, wire.from(), wire.to(), "wire " + wire);
+      }
+    }
+    for (Connector connector : connectors) {
+      checkOrder(s, position, connector.source(), connector.target(), "connector " + connector);
+    }
+  }
+
+  private void checkOrder(
+      Schedule s, Map<String, Integer> position, PortRef from, PortRef to, String edge) {
+    Integer source = position.get(from.module());
+    Integer target = position.get(to.module());
+    if (source == null || target == null) {
+      throw new IllegalArgumentException(edge + ": names a module that is not in the program");
+    }
+    if (source > target) {
+      throw badSchedule(
+          s, "'" + to.module() + "' runs before '" + from.module() + "', against the " + edge);
+    }
+  }
+
+  private IllegalStateException badSchedule(Schedule s, String why) {
+    return new IllegalStateException(
+        "scheduler "
+            + scheduler
+            + " returned "
+            + s.names()
+            + ": "
+            + why
+            + "; expected every module of the program once, producers before consumers");
   }
 
   private static void checkUniqueSchemaNames(List<Schema> schemas) {

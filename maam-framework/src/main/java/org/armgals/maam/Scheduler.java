@@ -16,7 +16,11 @@ import java.util.List;
  *   <li>a cycle is refused with a {@link CycleException} naming the modules on it.
  * </ol>
  *
- * <p>A scheduler is a pure function of its arguments; any thread may call it.
+ * <p>A scheduler is a pure function of its arguments; any thread may call it. Another scheduler may
+ * order the modules otherwise, but what it returns must keep {@link Schedule}'s contract: every
+ * module of the program once, each wire's and connector's source before its target. The robot
+ * checks it whenever its program changes and refuses a schedule that breaks it with an {@link
+ * IllegalStateException}, the program unchanged.
  */
 @FunctionalInterface
 public interface Scheduler {
