@@ -8,6 +8,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import org.jspecify.annotations.Nullable;
 
 /** {@link MetaRobot}: computes the new program and its schedule before replacing the old one. */
 final class MetaRobotImpl implements MetaRobot {
@@ -159,7 +160,12 @@ final class MetaRobotImpl implements MetaRobot {
    * producer wrote it this cycle, silently a cycle late. The built-in scheduler is not checked: its
    * property tests hold it to the contract.
    */
-  private void checkSchedule(Schedule s, List<Schema> schemas, List<Connector> connectors) {
+  private void checkSchedule(
+      @Nullable Schedule s, List<Schema> schemas, List<Connector> connectors) {
+    if (s == null) {
+      throw new IllegalStateException(
+          "scheduler " + scheduler + " returned null; expected a schedule of the program");
+    }
     Map<String, BehaviorModule> program = new LinkedHashMap<>();
     for (Schema schema : schemas) {
       for (BehaviorModule module : schema.modules()) {

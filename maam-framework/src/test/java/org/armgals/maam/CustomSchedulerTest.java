@@ -82,7 +82,7 @@ class CustomSchedulerTest {
   }
 
   @Test
-  void aScheduleMissingRepeatingOrInventingAModuleIsRefused() {
+  void aScheduleMissingRepeatingOrInventingAModuleOrNoneIsRefused() {
     ProgramChange.AddSchema add = new ProgramChange.AddSchema(wandering);
     assertThatThrownBy(() -> new MetaRobotImpl(reordering(order -> order.subList(0, 1))).apply(add))
         .isInstanceOf(IllegalStateException.class)
@@ -91,6 +91,9 @@ class CustomSchedulerTest {
             () -> new MetaRobotImpl(reordering(order -> List.of(wander, wander, motor))).apply(add))
         .isInstanceOf(IllegalStateException.class)
         .hasMessageContaining("module 'wander' is scheduled twice");
+    assertThatThrownBy(() -> new MetaRobotImpl((schemas, connectors) -> null).apply(add))
+        .isInstanceOf(IllegalStateException.class)
+        .hasMessageContaining("returned null");
     Drive impostor = new Drive("motor", TestRobot.OTHER_MOTOR);
     assertThatThrownBy(
             () -> new MetaRobotImpl(reordering(order -> List.of(wander, impostor))).apply(add))
