@@ -160,6 +160,17 @@ final class KinematicParts implements Parts {
   }
 
   @Override
+  public void readyForRays() {
+    for (int p = 0; p < geoms.length; p++) {
+      if (p > 0) {
+        legs[p - 1].place();
+      }
+      // The box needs the pose, so both are worked out.
+      geoms[p].getAABB();
+    }
+  }
+
+  @Override
   public void moved(LegModel leg) {
     order.moved(leg.leg.ordinal() + 1);
   }

@@ -35,6 +35,13 @@ sealed interface Parts permits SpaceParts, KinematicParts {
    */
   boolean legMayTouch(LegModel leg, Ground ground);
 
+  /**
+   * Places every part and brings its engine pose and box up to date, after {@link #clean()}: then,
+   * until a part moves, asking for a part, its pose or its box writes nothing, and lanes may cast
+   * rays at the parts at once (see {@link RayCaster}).
+   */
+  void readyForRays();
+
   /** {@code leg}'s capsule moved on its body (its engine geometry would have been marked). */
   void moved(LegModel leg);
 

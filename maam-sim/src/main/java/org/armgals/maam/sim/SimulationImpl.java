@@ -50,7 +50,7 @@ final class SimulationImpl implements Simulation {
     this.dt = b.stepNanos / 1e9;
     this.pacer = b.pacer;
     this.messages = new MessageBus(b.seed, b.messageDelayNanos, b.packetLoss);
-    this.physics = new Physics(scene, b.seed);
+    this.physics = new Physics(scene, b.seed, b.threads);
     this.lanes = new Lanes(b.threads, "maam-sim-" + scene.name());
     this.tips = new TipMatcher(scene.params());
     Cone cone = new Cone(scene.params().coneHalfAngle());
@@ -241,8 +241,9 @@ final class SimulationImpl implements Simulation {
   private final IntConsumer drainPass = this::drain;
   private final IntConsumer drainServoPass = this::drainServo;
   private final IntConsumer drainLastPass = this::drainLast;
-  private final IntConsumer aimPass = this::aim;
   private final IntConsumer sensePass = this::sense;
+  private final IntConsumer readyPass = this::ready;
+  private final Lanes.LaneWork castSensePass = this::castAndSense;
 
   /** Atom {@code i}'s push and servos, and (unless bindings follow first) its preparation. */
   private void servo(int i) {
@@ -287,9 +288,12 @@ final class SimulationImpl implements Simulation {
   }
 
   /**
-   * The sensing pass. On one lane it goes over the atoms twice, not four times (decision 0073):
-   * each atom is aimed and filed for the rays at once, and read as soon as its own rays are cast.
-   * On more, the engine's work (cleaning, casting) stays on this thread, between passes.
+   * The sensing pass, over the atoms twice, not four times (decision 0073): each atom is aimed and
+   * filed for the rays at once, and read as soon as its own rays are cast. On one lane the parts a
+   * ray needs are placed as it needs them. On more, each lane casts its atoms' rays at once with
+   * the others' (decision 0075): the first pass also readies each atom's parts, so that casting
+   * reads what no lane writes, and the grid is filed on this thread between the passes. Each lane
+   * casts exactly what one lane would, so the readings are the same on any number of lanes.
    */
   private void senseAll() {
     if (lanes.lanes() == 1) {
@@ -300,9 +304,30 @@ final class SimulationImpl implements Simulation {
       physics.castRays(atoms, sensePass);
       return;
     }
-    lanes.forEach(atoms.size(), aimPass);
-    physics.castRays(atoms);
-    lanes.forEach(atoms.size(), sensePass);
+    lanes.forEach(atoms.size(), readyPass);
+    physics.fileForRays();
+    lanes.forEach(atoms.size(), castSensePass);
+  }
+
+  /**
+   * Atom {@code i} aimed, filed and readied for rays cast on several lanes: it writes atom {@code
+   * i}'s legs, parts and box alone.
+   */
+  private void ready(int i) {
+    aim(i);
+    AtomModel atom = atoms.get(i);
+    physics.file(atom);
+    physics.readyForRays(atom);
+  }
+
+  /**
+   * Atom {@code i}'s rays cast on {@code lane}, then its sensors read: casting writes only its own
+   * legs' proximities, and reading writes only its own legs, view and inbox, none of which another
+   * lane's rays read (they read the engine's geometries and bodies, the boxes and the grid).
+   */
+  private void castAndSense(int lane, int i) {
+    physics.castRays(lane, atoms.get(i));
+    sense(i);
   }
 
   /** Aims atom {@code i}'s proximity rays, but those of failed or bound legs. */
