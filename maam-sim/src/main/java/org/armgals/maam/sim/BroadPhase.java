@@ -91,6 +91,11 @@ final class BroadPhase {
     joined[i] = false;
     boolean rests = !atom.still && restsOnTheGround(atom);
     quiet[i] = atom.still || rests;
+    if (!quiet[i]) {
+      // Its parts will meet the ground in the collisions: placed here, on its lane, they are placed
+      // where the collisions would place them, off the calling thread.
+      atom.parts.readyForGround(ground, boxes, 6 * i);
+    }
     for (LegModel leg : atom.legs) {
       if (atom.still || rests && !leg.movesOnItsCarrier()) {
         // Neither the part nor what it touched moved.

@@ -42,6 +42,14 @@ sealed interface Parts permits SpaceParts, KinematicParts {
    */
   void readyForRays();
 
+  /**
+   * Places the parts whose boxes may overlap what of {@code ground} the atom's box ({@code box} at
+   * {@code at}) overlaps, and works out their engine boxes: what the step's collisions with the
+   * ground would do first, done while the atom is at hand and on its lane. The values are those the
+   * collisions would work out.
+   */
+  void readyForGround(Ground ground, double[] box, int at);
+
   /** {@code leg}'s capsule moved on its body (its engine geometry would have been marked). */
   void moved(LegModel leg);
 

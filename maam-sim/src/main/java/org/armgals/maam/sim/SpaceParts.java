@@ -60,6 +60,11 @@ final class SpaceParts implements Parts {
   }
 
   @Override
+  public void readyForGround(Ground ground, double[] box, int at) {
+    // Cleaning the space worked out every part's box.
+  }
+
+  @Override
   public void moved(LegModel leg) {
     // The engine keeps the order.
   }
