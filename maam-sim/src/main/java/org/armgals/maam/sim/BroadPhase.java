@@ -4,15 +4,13 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.function.IntConsumer;
-import org.armgals.maam.spi.Leg;
-import org.jspecify.annotations.Nullable;
 import org.ode4j.ode.DGeom;
-import org.ode4j.ode.DRay;
 
 /**
  * Which pairs of geometries the narrow phase ({@link Physics}'s near callback) looks at: the parts
  * of atoms whose boxes overlap, found with an {@link AtomGrid}; an atom's parts and what of the
- * {@link Ground} they overlap; and, while sensing, rays and what they overlap (decision 0062).
+ * {@link Ground} they overlap; and, while sensing, rays and what they overlap, through a {@link
+ * RayCaster} per lane (decisions 0062, 0075).
  *
  * <p>The solver visits each body's contacts in the order they were made, so the pairs come in the
  * order the engine's hash space gave them wherever that order can be kept: each atom's pairs with
@@ -38,9 +36,17 @@ final class BroadPhase {
   private final DGeom.DNearCallback near;
   private final AtomGrid.PairVisitor pairs = this::pair;
 
-  BroadPhase(Ground ground, DGeom.DNearCallback near) {
+  /** A ray caster per lane, lane k's at k. */
+  private final RayCaster[] casters;
+
+  /** Calls {@code near} on a step's pairs, and casts rays on {@code lanes} lanes (at least 1). */
+  BroadPhase(Ground ground, DGeom.DNearCallback near, int lanes) {
     this.ground = ground;
     this.near = near;
+    casters = new RayCaster[lanes];
+    for (int k = 0; k < lanes; k++) {
+      casters[k] = new RayCaster(this, ground);
+    }
   }
 
   /** Adds an atom; atoms are added in id order, each at its {@link AtomModel#index}. */
@@ -85,6 +91,11 @@ final class BroadPhase {
     joined[i] = false;
     boolean rests = !atom.still && restsOnTheGround(atom);
     quiet[i] = atom.still || rests;
+    if (!quiet[i]) {
+      // Its parts will meet the ground in the collisions: placed here, on its lane, they are placed
+      // where the collisions would place them, off the calling thread.
+      atom.parts.readyForGround(ground, boxes, 6 * i);
+    }
     for (LegModel leg : atom.legs) {
       if (atom.still || rests && !leg.movesOnItsCarrier()) {
         // Neither the part nor what it touched moved.
@@ -121,7 +132,7 @@ final class BroadPhase {
       for (int g = 0; g < ground.geoms.size(); g++) {
         if (ground.overlaps(g, boxes, 6 * i)) {
           ground.box(g, groundBox, 0);
-          collideParts(atom, ground.geoms.get(g), groundBox, null, 0);
+          collideParts(atom, ground.geoms.get(g), groundBox);
         }
       }
     }
@@ -159,16 +170,12 @@ final class BroadPhase {
 
   /**
    * The near callback on each part of {@code atom} whose box overlaps {@code with}'s ({@code
-   * withBox}), in the parts' order: the engine's simple space's collide2. A ray ({@code aim} not
-   * null) is not tried against parts its segment surely misses.
+   * withBox}), in the parts' order: the engine's simple space's collide2.
    */
-  private void collideParts(
-      AtomModel atom, DGeom with, double[] withBox, double @Nullable [] aim, double length) {
+  private void collideParts(AtomModel atom, DGeom with, double[] withBox) {
     Parts parts = atom.parts;
     for (int i = 0; i < parts.count(); i++) {
-      if (parts.bound(i, other)
-          && (!Boxes.overlap(other, 0, withBox, 0)
-              || aim != null && Boxes.segmentMisses(other, 0, aim, length))) {
+      if (parts.bound(i, other) && !Boxes.overlap(other, 0, withBox, 0)) {
         continue;
       }
       DGeom g = parts.part(i);
@@ -180,20 +187,9 @@ final class BroadPhase {
   }
 
   /**
-   * Calls the near callback on the {@link LegModel#aimed aimed} rays of {@code atoms}' legs and
-   * what their boxes overlap, but their own atoms: the sensing pass.
-   */
-  void castRays(List<AtomModel> atoms) {
-    clean();
-    for (AtomModel atom : atoms) {
-      castRays(atom);
-    }
-  }
-
-  /**
    * Cleans {@code atom}'s parts and files its box: the start of a step's collisions ({@link
-   * #prepare}) and of a sensing pass, where once every atom is filed {@link #castRays(List,
-   * IntConsumer)} casts the rays.
+   * #prepare}) and of a sensing pass, where once every atom is filed and the grid {@link
+   * #fileForRays rebuilt} the rays are cast.
    */
   void file(AtomModel atom) {
     atom.parts.clean();
@@ -201,108 +197,50 @@ final class BroadPhase {
   }
 
   /**
-   * As {@link #castRays(List)}, every atom {@link #file filed}, handing each atom's index to {@code
-   * cast} as soon as its own rays are cast: casting a ray writes only its own leg's proximity, so
-   * what the atom senses is then known, and can be read while the atom is at hand.
+   * After every atom is {@link #file filed} for a sensing pass: files their boxes in the grid the
+   * rays ask.
+   */
+  void fileForRays() {
+    grid.rebuild(boxes, atoms.size());
+  }
+
+  /**
+   * One lane, every atom {@link #file filed}: casts each atom's aimed rays in turn, handing its
+   * index to {@code cast} as soon as its own rays are cast: casting a ray writes only its own leg's
+   * proximity, so what the atom senses is then known, and can be read while the atom is at hand.
    */
   void castRays(List<AtomModel> atoms, IntConsumer cast) {
-    grid.rebuild(boxes, atoms.size());
+    fileForRays();
+    RayCaster caster = casters[0];
     for (int i = 0; i < atoms.size(); i++) {
-      castRays(atoms.get(i));
+      caster.cast(atoms.get(i));
       cast.accept(i);
     }
   }
 
   /**
-   * Casts {@code atom}'s aimed rays. The grid is asked once, with a box around all of them, for the
-   * other atoms they may reach; each ray then tries those its own box overlaps, the very atoms the
-   * grid would give it (a ray keeps the nearest of its hits, so the order they are tried in does
-   * not matter).
+   * Casts {@code atom}'s aimed rays with lane {@code lane}'s caster, every atom {@link #file filed}
+   * and {@link Parts#readyForRays readied} and the grid {@link #fileForRays rebuilt}: lanes cast at
+   * once, each with its own caster, and read what no lane writes until the pass is over (see {@link
+   * RayCaster}).
    */
-  private void castRays(AtomModel atom) {
-    LegModel[] legs = atom.legs;
-    boolean any = false;
-    for (int l = 0; l < legs.length; l++) {
-      LegModel leg = legs[l];
-      if (!leg.aimed) {
-        continue;
-      }
-      Boxes.copy(leg.ray.getAABB(), rayBoxes, 6 * l);
-      if (!any) {
-        System.arraycopy(rayBoxes, 6 * l, reachBox, 0, 6);
-        any = true;
-      } else {
-        for (int axis = 0; axis < 3; axis++) {
-          reachBox[2 * axis] = Math.min(reachBox[2 * axis], rayBoxes[6 * l + 2 * axis]);
-          reachBox[2 * axis + 1] = Math.max(reachBox[2 * axis + 1], rayBoxes[6 * l + 2 * axis + 1]);
-        }
-      }
-    }
-    if (!any) {
-      return;
-    }
-    reached = 0;
-    casting = atom;
-    grid.forEachOverlapping(reachBox, reach);
-    for (int l = 0; l < legs.length; l++) {
-      if (legs[l].aimed) {
-        castRay(legs[l], 6 * l);
-      }
-    }
+  void castRays(int lane, AtomModel atom) {
+    casters[lane].cast(atom);
   }
 
-  /** {@code leg}'s ray, its box at {@code at} in {@link #rayBoxes}. */
-  private void castRay(LegModel leg, int at) {
-    DRay ray = leg.ray;
-    System.arraycopy(rayBoxes, at, rayBox, 0, 6);
-    for (int g = 0; g < ground.geoms.size(); g++) {
-      if (ground.overlaps(g, rayBox, 0)) {
-        near.call(null, ray, ground.geoms.get(g));
-      }
-    }
-    double range = leg.atom.params.proximityRange();
-    for (int k = 0; k < reached; k++) {
-      int a = reachedAtoms[k];
-      if (Boxes.overlap(boxes, 6 * a, rayBox, 0)
-          && !Boxes.segmentMisses(boxes, 6 * a, leg.aim, range)) {
-        collideParts(atoms.get(a), ray, rayBox, leg.aim, range);
-      }
-    }
+  /** The grid of the atoms' boxes as last rebuilt. */
+  AtomGrid grid() {
+    return grid;
   }
 
-  /** The atom whose rays are being cast. */
-  private @Nullable AtomModel casting;
-
-  /** Its rays' boxes, leg l's at 6l, and a box around them all. */
-  private final double[] rayBoxes = new double[6 * Leg.values().length];
-
-  private final double[] reachBox = new double[6];
-
-  /** The ray being cast's box. */
-  private final double[] rayBox = new double[6];
-
-  /** The other atoms whose boxes overlap {@link #reachBox}, in the grid's order. */
-  private int[] reachedAtoms = new int[8];
-
-  private int reached;
-  private final AtomGrid.AtomVisitor reach = this::reach;
-
-  private void reach(int a) {
-    if (atoms.get(a) == casting) {
-      return;
-    }
-    if (reached == reachedAtoms.length) {
-      reachedAtoms = Arrays.copyOf(reachedAtoms, 2 * reached);
-    }
-    reachedAtoms[reached++] = a;
+  /** The atoms' boxes, atom i's at 6i, as last filed. */
+  double[] boxes() {
+    return boxes;
   }
 
-  /** Starts the sensing pass: cleans every atom's parts and files their boxes. */
-  private void clean() {
-    for (AtomModel atom : atoms) {
-      file(atom);
-    }
-    grid.rebuild(boxes, atoms.size());
+  /** The atom at {@code index}. */
+  AtomModel atom(int index) {
+    return atoms.get(index);
   }
 
   /**

@@ -160,6 +160,33 @@ final class KinematicParts implements Parts {
   }
 
   @Override
+  public void readyForRays() {
+    for (int p = 0; p < geoms.length; p++) {
+      if (p > 0) {
+        legs[p - 1].place();
+      }
+      // The box needs the pose, so both are worked out.
+      geoms[p].getAABB();
+    }
+  }
+
+  @Override
+  public void readyForGround(Ground ground, double[] box, int at) {
+    for (int g = 0; g < ground.geoms.size(); g++) {
+      if (!ground.overlaps(g, box, at)) {
+        continue;
+      }
+      double[] reaches = reaches();
+      for (int l = 0; l < legs.length; l++) {
+        if (ground.overlaps(g, reaches, 6 * l)) {
+          legs[l].place();
+          geoms[l + 1].getAABB();
+        }
+      }
+    }
+  }
+
+  @Override
   public void moved(LegModel leg) {
     order.moved(leg.leg.ordinal() + 1);
   }

@@ -25,8 +25,16 @@ final class Lanes implements AutoCloseable {
 
   private final Worker[] workers;
 
+  /**
+   * A pass's work on one atom, told which lane runs it: the calling thread is lane 0 and worker
+   * thread k lane k, in every pass, so a lane may keep scratch state of its own.
+   */
+  interface LaneWork {
+    void accept(int lane, int index);
+  }
+
   /** The pass being run: its work and number of atoms, published by {@link #pass}. */
-  private @Nullable IntConsumer work;
+  private @Nullable LaneWork work;
 
   private int count;
 
@@ -68,9 +76,17 @@ final class Lanes implements AutoCloseable {
    * increasing order, and returns when all are done. A failure in any lane is thrown here.
    */
   void forEach(int count, IntConsumer work) {
+    forEach(count, (lane, i) -> work.accept(i));
+  }
+
+  /**
+   * As {@link #forEach(int, IntConsumer)}, telling {@code work} the lane each index runs on: a pass
+   * small enough to run on the calling thread alone runs all of it as lane 0.
+   */
+  void forEach(int count, LaneWork work) {
     if (workers.length == 0 || count < MIN_PER_LANE * lanes()) {
       for (int i = 0; i < count; i++) {
-        work.accept(i);
+        work.accept(0, i);
       }
       return;
     }
@@ -106,11 +122,11 @@ final class Lanes implements AutoCloseable {
     }
   }
 
-  private static void run(IntConsumer work, int lane, int lanes, int count) {
+  private static void run(LaneWork work, int lane, int lanes, int count) {
     int from = (int) ((long) count * lane / lanes);
     int to = (int) ((long) count * (lane + 1) / lanes);
     for (int i = from; i < to; i++) {
-      work.accept(i);
+      work.accept(lane, i);
     }
   }
 
@@ -152,7 +168,7 @@ final class Lanes implements AutoCloseable {
         }
         idle.reset();
         seen = p;
-        IntConsumer w = work;
+        LaneWork w = work;
         if (w != null) {
           try {
             Lanes.run(w, lane, lanes(), count);

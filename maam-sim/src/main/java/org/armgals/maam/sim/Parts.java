@@ -35,6 +35,21 @@ sealed interface Parts permits SpaceParts, KinematicParts {
    */
   boolean legMayTouch(LegModel leg, Ground ground);
 
+  /**
+   * Places every part and brings its engine pose and box up to date, after {@link #clean()}: then,
+   * until a part moves, asking for a part, its pose or its box writes nothing, and lanes may cast
+   * rays at the parts at once (see {@link RayCaster}).
+   */
+  void readyForRays();
+
+  /**
+   * Places the parts whose boxes may overlap what of {@code ground} the atom's box ({@code box} at
+   * {@code at}) overlaps, and works out their engine boxes: what the step's collisions with the
+   * ground would do first, done while the atom is at hand and on its lane. The values are those the
+   * collisions would work out.
+   */
+  void readyForGround(Ground ground, double[] box, int at);
+
   /** {@code leg}'s capsule moved on its body (its engine geometry would have been marked). */
   void moved(LegModel leg);
 

@@ -84,7 +84,8 @@ final class Physics {
   private final double legRadius;
   private long seed;
 
-  Physics(Scene scene, long seed) {
+  /** The world of {@code scene}, its solver seeded with {@code seed}, sensing on {@code lanes}. */
+  Physics(Scene scene, long seed, int lanes) {
     this.seed = seed & 0xffffffffL;
     this.friction = scene.params().friction();
     this.legRadius = scene.params().legRadius();
@@ -96,7 +97,7 @@ final class Physics {
     world.setQuickStepNumIterations(SOLVER_ITERATIONS);
     world.setContactMaxCorrectingVel(1.0);
     world.setContactSurfaceLayer(0.0005);
-    broadPhase = new BroadPhase(new Ground(scene.obstacles()), nearCallback);
+    broadPhase = new BroadPhase(new Ground(scene.obstacles()), nearCallback, lanes);
   }
 
   /** Adds an atom; atoms are added in id order. */
@@ -106,28 +107,33 @@ final class Physics {
 
   /**
    * Casts the {@link LegModel#aimed aimed} proximity rays of {@code atoms}' legs against everything
-   * but their own atoms: the sensing pass at the start of a control cycle.
+   * but their own atoms, on one thread that has {@link #file filed} every atom, handing each atom's
+   * index to {@code cast} once its rays are cast: see {@link BroadPhase#castRays(List,
+   * IntConsumer)}. Casting uses no global of the engine's, so it takes no lock.
    */
-  void castRays(List<AtomModel> atoms) {
-    ENGINE.lock();
-    try {
-      broadPhase.castRays(atoms);
-    } finally {
-      ENGINE.unlock();
-    }
+  void castRays(List<AtomModel> atoms, IntConsumer cast) {
+    broadPhase.castRays(atoms, cast);
   }
 
   /**
-   * As {@link #castRays(List)}, on one thread that has {@link BroadPhase#file filed} every atom,
-   * handing each atom's index to {@code cast} once its rays are cast.
+   * Readies {@code atom} for rays cast on several lanes, after it is {@link #file filed}: see
+   * {@link Parts#readyForRays}.
    */
-  void castRays(List<AtomModel> atoms, IntConsumer cast) {
-    ENGINE.lock();
-    try {
-      broadPhase.castRays(atoms, cast);
-    } finally {
-      ENGINE.unlock();
-    }
+  void readyForRays(AtomModel atom) {
+    atom.parts.readyForRays();
+  }
+
+  /** Every atom filed (and readied), before the lanes cast: see {@link BroadPhase#fileForRays}. */
+  void fileForRays() {
+    broadPhase.fileForRays();
+  }
+
+  /**
+   * Casts {@code atom}'s aimed rays on lane {@code lane}: see {@link BroadPhase#castRays(int,
+   * AtomModel)}.
+   */
+  void castRays(int lane, AtomModel atom) {
+    broadPhase.castRays(lane, atom);
   }
 
   /** Files {@code atom} for a sensing pass: see {@link BroadPhase#file}. */
@@ -166,10 +172,6 @@ final class Physics {
   private void near(Object data, DGeom o1, DGeom o2) {
     GeomTag t1 = (GeomTag) o1.getData();
     GeomTag t2 = (GeomTag) o2.getData();
-    if (t1.kind() == GeomTag.Kind.RAY || t2.kind() == GeomTag.Kind.RAY) {
-      ray(t1, o1, t2, o2);
-      return;
-    }
     if (t1.atom() != null && t1.atom() == t2.atom()) {
       return;
     }
@@ -343,23 +345,6 @@ final class Physics {
       } else {
         leg.touchingAtom = true;
       }
-    }
-  }
-
-  private void ray(GeomTag t1, DGeom o1, GeomTag t2, DGeom o2) {
-    if (t1.kind() == GeomTag.Kind.RAY && t2.kind() == GeomTag.Kind.RAY) {
-      return;
-    }
-    if (t1.atom() != null && t1.atom() == t2.atom()) {
-      return;
-    }
-    LegModel leg = t1.kind() == GeomTag.Kind.RAY ? t1.leg() : t2.leg();
-    if (leg == null) {
-      return;
-    }
-    int n = OdeHelper.collide(o1, o2, 1, buffer.getGeomBuffer());
-    if (n > 0) {
-      leg.proximity = Math.min(leg.proximity, buffer.get(0).geom.depth);
     }
   }
 

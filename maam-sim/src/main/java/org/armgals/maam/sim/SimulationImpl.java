@@ -2,9 +2,7 @@ package org.armgals.maam.sim;
 
 import java.util.ArrayList;
 import java.util.Comparator;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalInt;
 import java.util.TreeMap;
@@ -27,7 +25,18 @@ final class SimulationImpl implements Simulation {
 
   private final TreeMap<Integer, BodyView> bodies = new TreeMap<>();
   private final List<AtomModel> atoms = new ArrayList<>();
-  private final Map<Integer, Controller> controllers = new HashMap<>();
+
+  /** Each atom's view and controller, at the atom's index: read every cycle without a lookup. */
+  private final BodyView[] views;
+
+  private final Controller[] controllers;
+
+  /**
+   * Whether each atom, at its index, had a locked, free tip at this cycle's sensing: only those
+   * atoms' tips may bind (see {@link #bindLockedTips}).
+   */
+  private final boolean[] mayBind;
+
   private final List<Binding> bindings = new ArrayList<>();
   private final MessageBus messages;
   private final TipMatcher tips;
@@ -50,7 +59,7 @@ final class SimulationImpl implements Simulation {
     this.dt = b.stepNanos / 1e9;
     this.pacer = b.pacer;
     this.messages = new MessageBus(b.seed, b.messageDelayNanos, b.packetLoss);
-    this.physics = new Physics(scene, b.seed);
+    this.physics = new Physics(scene, b.seed, b.threads);
     this.lanes = new Lanes(b.threads, "maam-sim-" + scene.name());
     this.tips = new TipMatcher(scene.params());
     Cone cone = new Cone(scene.params().coneHalfAngle());
@@ -60,10 +69,16 @@ final class SimulationImpl implements Simulation {
       AtomModel atom = new AtomModel(physics, atoms.size(), p, scene.params(), cone, b.legDynamics);
       atoms.add(atom);
       physics.add(atom);
-      emptied = new boolean[atoms.size()];
       bodies.put(p.id(), new BodyView(this, atom));
-      Controller c = b.controllerById.get(p.id());
-      controllers.put(p.id(), c != null ? c : b.controllers.apply(p.id()));
+    }
+    emptied = new boolean[atoms.size()];
+    mayBind = new boolean[atoms.size()];
+    views = new BodyView[atoms.size()];
+    controllers = new Controller[atoms.size()];
+    for (AtomModel atom : atoms) {
+      views[atom.index] = bodies.get(atom.id);
+      Controller c = b.controllerById.get(atom.id);
+      controllers[atom.index] = c != null ? c : b.controllers.apply(atom.id);
     }
     for (Scene.Bond bond : scene.bonds()) {
       LegModel a = bodies.get(bond.atomA()).model.leg(bond.legA());
@@ -124,8 +139,7 @@ final class SimulationImpl implements Simulation {
 
   @Override
   public void setController(int id, Controller controller) {
-    view(id);
-    controllers.put(id, java.util.Objects.requireNonNull(controller, "controller"));
+    controllers[view(id).model.index] = java.util.Objects.requireNonNull(controller, "controller");
   }
 
   @Override
@@ -155,7 +169,7 @@ final class SimulationImpl implements Simulation {
     bindLockedTips();
     for (AtomModel atom : atoms) {
       if (!atom.failed) {
-        controllers.get(atom.id).onCycle(bodies.get(atom.id).body, cycle);
+        controllers[atom.index].onCycle(views[atom.index].body, cycle);
       }
     }
     boolean servoed = false;
@@ -166,7 +180,7 @@ final class SimulationImpl implements Simulation {
     if (trace != null) {
       List<BodyView> readings = new ArrayList<>(atoms.size());
       for (AtomModel atom : atoms) {
-        readings.add(bodies.get(atom.id));
+        readings.add(views[atom.index]);
       }
       trace.cycle(cycle, start, readings, events);
     }
@@ -241,8 +255,9 @@ final class SimulationImpl implements Simulation {
   private final IntConsumer drainPass = this::drain;
   private final IntConsumer drainServoPass = this::drainServo;
   private final IntConsumer drainLastPass = this::drainLast;
-  private final IntConsumer aimPass = this::aim;
   private final IntConsumer sensePass = this::sense;
+  private final IntConsumer readyPass = this::ready;
+  private final Lanes.LaneWork castSensePass = this::castAndSense;
 
   /** Atom {@code i}'s push and servos, and (unless bindings follow first) its preparation. */
   private void servo(int i) {
@@ -287,9 +302,12 @@ final class SimulationImpl implements Simulation {
   }
 
   /**
-   * The sensing pass. On one lane it goes over the atoms twice, not four times (decision 0073):
-   * each atom is aimed and filed for the rays at once, and read as soon as its own rays are cast.
-   * On more, the engine's work (cleaning, casting) stays on this thread, between passes.
+   * The sensing pass, over the atoms twice, not four times (decision 0073): each atom is aimed and
+   * filed for the rays at once, and read as soon as its own rays are cast. On one lane the parts a
+   * ray needs are placed as it needs them. On more, each lane casts its atoms' rays at once with
+   * the others' (decision 0075): the first pass also readies each atom's parts, so that casting
+   * reads what no lane writes, and the grid is filed on this thread between the passes. Each lane
+   * casts exactly what one lane would, so the readings are the same on any number of lanes.
    */
   private void senseAll() {
     if (lanes.lanes() == 1) {
@@ -300,9 +318,30 @@ final class SimulationImpl implements Simulation {
       physics.castRays(atoms, sensePass);
       return;
     }
-    lanes.forEach(atoms.size(), aimPass);
-    physics.castRays(atoms);
-    lanes.forEach(atoms.size(), sensePass);
+    lanes.forEach(atoms.size(), readyPass);
+    physics.fileForRays();
+    lanes.forEach(atoms.size(), castSensePass);
+  }
+
+  /**
+   * Atom {@code i} aimed, filed and readied for rays cast on several lanes: it writes atom {@code
+   * i}'s legs, parts and box alone.
+   */
+  private void ready(int i) {
+    aim(i);
+    AtomModel atom = atoms.get(i);
+    physics.file(atom);
+    physics.readyForRays(atom);
+  }
+
+  /**
+   * Atom {@code i}'s rays cast on {@code lane}, then its sensors read: casting writes only its own
+   * legs' proximities, and reading writes only its own legs, view and inbox, none of which another
+   * lane's rays read (they read the engine's geometries and bodies, the boxes and the grid).
+   */
+  private void castAndSense(int lane, int i) {
+    physics.castRays(lane, atoms.get(i));
+    sense(i);
   }
 
   /** Aims atom {@code i}'s proximity rays, but those of failed or bound legs. */
@@ -323,17 +362,21 @@ final class SimulationImpl implements Simulation {
   }
 
   /**
-   * Reads atom {@code i}'s sensors, starts its tips' contacts of the next period afresh, and
-   * empties its inbox for the messages of the cycle.
+   * Reads atom {@code i}'s sensors, starts its tips' contacts of the next period afresh, empties
+   * its inbox for the messages of the cycle, and notes whether it has a tip that may {@link
+   * #mayBind bind}.
    */
   private void sense(int i) {
     AtomModel atom = atoms.get(i);
     atom.inbox.clear();
-    BodyView view = bodies.get(atom.id);
+    BodyView view = views[i];
     view.sensors = sense(atom, view.joints);
+    boolean locked = false;
     for (LegModel leg : atom.legs) {
       leg.contact = false;
+      locked |= leg.locked && leg.binding == null && !leg.failed;
     }
+    mayBind[i] = locked && !atom.failed;
   }
 
   /**
@@ -395,8 +438,23 @@ final class SimulationImpl implements Simulation {
         legs);
   }
 
+  /**
+   * Binds the pairs of locked, free tips in tolerance, among the atoms that had such a tip at this
+   * cycle's sensing ({@link #mayBind}, worked out while each atom was read): nothing locks or frees
+   * a tip between the sensing and here, so these are the atoms {@link TipMatcher#pairs} would take
+   * from the whole list, in the same order, and a cycle with none goes over no atom.
+   */
   private void bindLockedTips() {
-    for (LegModel[] pair : tips.pairs(atoms)) {
+    List<AtomModel> locked = new ArrayList<>();
+    for (int i = 0; i < mayBind.length; i++) {
+      if (mayBind[i]) {
+        locked.add(atoms.get(i));
+      }
+    }
+    if (locked.isEmpty()) {
+      return;
+    }
+    for (LegModel[] pair : tips.pairs(locked)) {
       bindings.add(new Binding(physics, pair[0], pair[1]));
       events.add(
           new SimEvent.Bound(

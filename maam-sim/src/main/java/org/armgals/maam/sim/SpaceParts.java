@@ -52,6 +52,19 @@ final class SpaceParts implements Parts {
   }
 
   @Override
+  public void readyForRays() {
+    // Cleaning the space worked out every part's box, and the pose with it; this only checks.
+    for (DGeom g : order) {
+      g.getAABB();
+    }
+  }
+
+  @Override
+  public void readyForGround(Ground ground, double[] box, int at) {
+    // Cleaning the space worked out every part's box.
+  }
+
+  @Override
   public void moved(LegModel leg) {
     // The engine keeps the order.
   }

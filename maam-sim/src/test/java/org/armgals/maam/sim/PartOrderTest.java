@@ -15,7 +15,7 @@ class PartOrderTest {
   @Test
   void keepsTheOrderOfTheEnginesSimpleSpaceWhateverMovesAndWhenever() {
     // Physics sets the engine up (its static initializer).
-    new Physics(Scenes.builtIn("single"), 1).destroy();
+    new Physics(Scenes.builtIn("single"), 1, 1).destroy();
     DWorld world = OdeHelper.createWorld();
     DBody body = OdeHelper.createBody(world);
     DSpace space = OdeHelper.createSimpleSpace();
