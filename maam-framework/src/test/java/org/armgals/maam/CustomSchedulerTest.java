@@ -3,7 +3,6 @@ package org.armgals.maam;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -16,18 +15,7 @@ import org.junit.jupiter.api.Test;
  */
 class CustomSchedulerTest {
 
-  private final Sensing wander = new Sensing("wander", TestRobot.WANDER, 0);
-  private final Sensing avoid = new Sensing("avoid", TestRobot.OBSTACLE, 100);
-  private final Drive motor = new Drive("motor", TestRobot.MOTOR);
-  private final Schema wandering =
-      Schema.builder("wander")
-          .add(wander)
-          .add(motor)
-          .wire(wander, Sensing.OUT, motor, Drive.IN)
-          .build();
-  private final Schema avoiding = Schema.builder("avoid").add(avoid).build();
-  private final Inhibitor avoidInhibitsMotor =
-      new Inhibitor(PortRef.of(avoid, Sensing.OUT), PortRef.of(motor, Drive.IN), Duration.ZERO);
+  private final WanderAndAvoid p = new WanderAndAvoid();
 
   /** The built-in order, then changed by {@code change}. */
   private static Scheduler reordering(
@@ -50,7 +38,7 @@ class CustomSchedulerTest {
   @Test
   void aConsumerScheduledBeforeItsProducerIsRefusedNamingBothAndTheWire() {
     MetaRobotImpl meta = new MetaRobotImpl(reordering(order -> order.reversed()));
-    assertThatThrownBy(() -> meta.apply(new ProgramChange.AddSchema(wandering)))
+    assertThatThrownBy(() -> meta.apply(new ProgramChange.AddSchema(p.wandering)))
         .isInstanceOf(IllegalStateException.class)
         .hasMessageContaining("scheduler reordering returned [motor, wander]")
         .hasMessageContaining(
@@ -75,7 +63,7 @@ class CustomSchedulerTest {
             () ->
                 meta.apply(
                     new ProgramChange.SetScheduling(
-                        List.of(avoiding, wandering), List.of(avoidInhibitsMotor))))
+                        List.of(p.avoiding, p.wandering), List.of(p.avoidInhibitsMotor))))
         .isInstanceOf(IllegalStateException.class)
         .hasMessageContaining("'motor' runs before 'avoid', against the connector");
     assertThat(meta.version()).isZero();
@@ -83,12 +71,14 @@ class CustomSchedulerTest {
 
   @Test
   void aScheduleMissingRepeatingOrInventingAModuleOrNoneIsRefused() {
-    ProgramChange.AddSchema add = new ProgramChange.AddSchema(wandering);
+    ProgramChange.AddSchema add = new ProgramChange.AddSchema(p.wandering);
     assertThatThrownBy(() -> new MetaRobotImpl(reordering(order -> order.subList(0, 1))).apply(add))
         .isInstanceOf(IllegalStateException.class)
         .hasMessageContaining("modules [motor] are not scheduled");
     assertThatThrownBy(
-            () -> new MetaRobotImpl(reordering(order -> List.of(wander, wander, motor))).apply(add))
+            () ->
+                new MetaRobotImpl(reordering(order -> List.of(p.wander, p.wander, p.motor)))
+                    .apply(add))
         .isInstanceOf(IllegalStateException.class)
         .hasMessageContaining("module 'wander' is scheduled twice");
     assertThatThrownBy(() -> new MetaRobotImpl((schemas, connectors) -> null).apply(add))
@@ -96,7 +86,7 @@ class CustomSchedulerTest {
         .hasMessageContaining("returned null");
     Drive impostor = new Drive("motor", TestRobot.OTHER_MOTOR);
     assertThatThrownBy(
-            () -> new MetaRobotImpl(reordering(order -> List.of(wander, impostor))).apply(add))
+            () -> new MetaRobotImpl(reordering(order -> List.of(p.wander, impostor))).apply(add))
         .isInstanceOf(IllegalStateException.class)
         .hasMessageContaining("module 'motor' is not one of the program's");
   }
@@ -104,8 +94,9 @@ class CustomSchedulerTest {
   @Test
   void anotherOrderThatKeepsTheContractIsUsed() {
     // The two schemas are independent until the inhibitor: wander's first is as valid.
-    MetaRobotImpl meta = new MetaRobotImpl(reordering(order -> List.of(wander, motor, avoid)));
-    meta.apply(new ProgramChange.SetScheduling(List.of(avoiding, wandering), List.of()));
+    MetaRobotImpl meta =
+        new MetaRobotImpl(reordering(order -> List.of(p.wander, p.motor, p.avoid)));
+    meta.apply(new ProgramChange.SetScheduling(List.of(p.avoiding, p.wandering), List.of()));
     assertThat(meta.schedule().names()).containsExactly("wander", "motor", "avoid");
     assertThat(meta.version()).isEqualTo(1);
   }

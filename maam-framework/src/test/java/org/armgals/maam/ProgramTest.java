@@ -15,25 +15,15 @@ import org.junit.jupiter.api.Test;
  */
 class ProgramTest {
 
-  private final Sensing wander = new Sensing("wander", TestRobot.WANDER, 0);
-  private final Sensing avoid = new Sensing("avoid", TestRobot.OBSTACLE, 100);
-  private final Drive motor = new Drive("motor", TestRobot.MOTOR);
-  private final Schema wandering =
-      Schema.builder("wander")
-          .add(wander)
-          .add(motor)
-          .wire(wander, Sensing.OUT, motor, Drive.IN)
-          .build();
-  private final Inhibitor avoidInhibitsMotor =
-      new Inhibitor(PortRef.of(avoid, Sensing.OUT), PortRef.of(motor, Drive.IN), Duration.ZERO);
+  private final WanderAndAvoid p = new WanderAndAvoid();
 
   @Test
   void setSchedulingReplacesTheWholeProgram() {
     TestRobot robot = TestRobot.create();
-    robot.addSchema(wandering);
+    robot.addSchema(p.wandering);
     robot.setScheduling(
-        List.of(Schema.builder("avoid").add(avoid).build(), wandering),
-        List.of(avoidInhibitsMotor));
+        List.of(Schema.builder("avoid").add(p.avoid).build(), p.wandering),
+        List.of(p.avoidInhibitsMotor));
     assertThat(robot.schedule().names()).containsExactly("avoid", "wander", "motor");
     assertThat(robot.step(5, 1)).isEqualTo(-1);
   }
@@ -41,11 +31,12 @@ class ProgramTest {
   @Test
   void aRefusedChangeLeavesTheProgramAsItWasAndSaysWhy() {
     TestRobot robot = TestRobot.create();
-    robot.addSchema(wandering);
-    robot.addBehaviorModule(avoid);
-    robot.addConnector(avoidInhibitsMotor);
+    robot.addSchema(p.wandering);
+    robot.addBehaviorModule(p.avoid);
+    robot.addConnector(p.avoidInhibitsMotor);
     Suppressor loop =
-        new Suppressor(PortRef.of(motor, Drive.IN), PortRef.of(avoid, Sensing.OUT), Duration.ZERO);
+        new Suppressor(
+            PortRef.of(p.motor, Drive.IN), PortRef.of(p.avoid, Sensing.OUT), Duration.ZERO);
     List<String> before = robot.schedule().names();
     long version = robot.metaRobot().version();
 
@@ -79,9 +70,9 @@ class ProgramTest {
   @Test
   void removingASchemaRemovesItsConnectorsAndReschedules() {
     TestRobot robot = TestRobot.create();
-    robot.addSchema(wandering);
-    robot.addBehaviorModule(avoid);
-    robot.addConnector(avoidInhibitsMotor);
+    robot.addSchema(p.wandering);
+    robot.addBehaviorModule(p.avoid);
+    robot.addConnector(p.avoidInhibitsMotor);
     robot.removeSchema("avoid");
     assertThat(robot.metaRobot().connectors()).isEmpty();
     assertThat(robot.schedule().names()).containsExactly("wander", "motor");
@@ -91,7 +82,7 @@ class ProgramTest {
   @Test
   void aChangeOfModuleMustKeepItsKindAndPorts() {
     TestRobot robot = TestRobot.create();
-    robot.addSchema(wandering);
+    robot.addSchema(p.wandering);
     assertThatThrownBy(() -> robot.changeModule(new Drive("wander", TestRobot.MOTOR)))
         .isInstanceOf(IllegalArgumentException.class)
         .hasMessageContaining("expected a perceptor")
@@ -103,8 +94,8 @@ class ProgramTest {
   @Test
   void theObservationShowsTheProgramAndCountsItsChanges() {
     TestRobot robot = TestRobot.create();
-    robot.addSchema(wandering);
-    robot.addBehaviorModule(avoid);
+    robot.addSchema(p.wandering);
+    robot.addBehaviorModule(p.avoid);
     robot.step(5, 0);
 
     assertThat(robot.observation().fields())
