@@ -386,7 +386,7 @@ final class SimulationImpl implements Simulation {
     boolean locked = false;
     for (LegModel leg : atom.legs) {
       leg.contact = false;
-      locked |= leg.locked && leg.binding == null && !leg.failed;
+      locked |= TipMatcher.lockedAndFree(leg);
     }
     mayBind[i] = locked && !atom.failed;
   }

@@ -34,6 +34,11 @@ final class TipMatcher {
     return Math.acos(Math.max(-1, Math.min(1, cos))) <= alignment;
   }
 
+  /** Whether {@code leg}'s tip is locked and free, so that it may bind if its atom works. */
+  static boolean lockedAndFree(LegModel leg) {
+    return leg.locked && leg.binding == null && !leg.failed;
+  }
+
   /**
    * The pairs to bind now: each locked, free tip of a working atom with the nearest such tip of
    * another atom in tolerance. Tips are visited in the order of atom ids and legs, and a tip is
@@ -47,7 +52,7 @@ final class TipMatcher {
         continue;
       }
       for (LegModel leg : atom.legs) {
-        if (leg.locked && leg.binding == null && !leg.failed) {
+        if (lockedAndFree(leg)) {
           candidates.add(leg);
           grid.computeIfAbsent(key(leg.tip(), 0, 0, 0), k -> new ArrayList<>()).add(leg);
         }
