@@ -115,7 +115,6 @@ final class AtomModel {
       model.locked = params.autoLock();
       model.proximity = params.proximityRange();
       capsule.setData(new GeomTag(GeomTag.Kind.LEG, this, model));
-      ray.setData(new GeomTag(GeomTag.Kind.RAY, this, model));
       legs[leg.ordinal()] = model;
     }
     if (space != null) {
