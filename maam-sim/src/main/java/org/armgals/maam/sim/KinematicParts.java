@@ -161,12 +161,9 @@ final class KinematicParts implements Parts {
 
   @Override
   public void readyForRays() {
-    for (int p = 0; p < geoms.length; p++) {
-      if (p > 0) {
-        legs[p - 1].place();
-      }
-      // The box needs the pose, so both are worked out.
-      geoms[p].getAABB();
+    for (int i = 0; i < geoms.length; i++) {
+      // part(i) places a leg's capsule; the box needs the pose, so both are worked out.
+      part(i).getAABB();
     }
   }
 
