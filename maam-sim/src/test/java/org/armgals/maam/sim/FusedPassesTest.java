@@ -1,9 +1,9 @@
 package org.armgals.maam.sim;
 
 import static org.armgals.maam.sim.TestScenes.joints;
+import static org.armgals.maam.sim.TestScenes.sensorsEachCycle;
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
 import org.armgals.maam.spi.Leg;
@@ -19,7 +19,6 @@ class FusedPassesTest {
 
   /** Every atom's sensors after each of {@code cycles} cycles, the passes fused or not. */
   private static List<AtomSensors> sensed(LegDynamics dynamics, boolean fused, int cycles) {
-    List<AtomSensors> sensed = new ArrayList<>();
     try (Simulation s =
         Simulation.builder(Scenes.grid(9, 0.21))
             .legDynamics(dynamics)
@@ -36,14 +35,8 @@ class FusedPassesTest {
       if (!fused) {
         ((SimulationImpl) s).separatePasses();
       }
-      for (int c = 0; c < cycles; c++) {
-        s.runCycle();
-        for (int id : s.atomIds()) {
-          sensed.add(s.sensors(id));
-        }
-      }
+      return sensorsEachCycle(s, cycles);
     }
-    return sensed;
   }
 
   @ParameterizedTest

@@ -1,6 +1,7 @@
 package org.armgals.maam.sim;
 
 import static org.armgals.maam.sim.TestScenes.joints;
+import static org.armgals.maam.sim.TestScenes.sensorsEachCycle;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.ArrayList;
@@ -36,7 +37,6 @@ class RaysOnLanesTest {
   /** Every atom's sensors at the start of each of {@code cycles} cycles, on {@code threads}. */
   private static List<AtomSensors> sensed(
       LegDynamics dynamics, int atoms, int threads, int cycles) {
-    List<AtomSensors> sensed = new ArrayList<>();
     try (Simulation s =
         Simulation.builder(layers(atoms))
             .legDynamics(dynamics)
@@ -50,14 +50,8 @@ class RaysOnLanesTest {
                   };
                 })
             .build()) {
-      for (int c = 0; c < cycles; c++) {
-        s.runCycle();
-        for (int id : s.atomIds()) {
-          sensed.add(s.sensors(id));
-        }
-      }
+      return sensorsEachCycle(s, cycles);
     }
-    return sensed;
   }
 
   @ParameterizedTest

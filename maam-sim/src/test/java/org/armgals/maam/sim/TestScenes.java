@@ -1,5 +1,7 @@
 package org.armgals.maam.sim;
 
+import java.util.ArrayList;
+import java.util.List;
 import org.armgals.maam.spi.Body;
 
 /** Scenes the tests share, and the way in to an atom's physics for the tests of the physics. */
@@ -18,6 +20,18 @@ final class TestScenes {
   /** The atom behind a controller's {@code body}, in the physics' terms. */
   static BodyView joints(Body body) {
     return ((SimBody) body).atom;
+  }
+
+  /** Every atom's sensors, in id order, after each of {@code cycles} cycles of {@code s}. */
+  static List<AtomSensors> sensorsEachCycle(Simulation s, int cycles) {
+    List<AtomSensors> sensed = new ArrayList<>();
+    for (int c = 0; c < cycles; c++) {
+      s.runCycle();
+      for (int id : s.atomIds()) {
+        sensed.add(s.sensors(id));
+      }
+    }
+    return sensed;
   }
 
   /** Two upright atoms in free space, +x of atom 1 facing -x of atom 2 across {@code gap} m. */
