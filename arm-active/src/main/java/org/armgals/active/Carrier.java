@@ -29,6 +29,16 @@ class Carrier {
   /** Events the running activation took from its object's buffer, not yet given back. */
   int taken;
 
+  /** How many taken events the running activation gives back at once; see {@code Core#taken}. */
+  int takenBatch;
+
+  /**
+   * The running activation's place in its object's buffer, while it takes events: its object's
+   * {@code head}, held here so that taking an event writes nothing in the object (written back when
+   * the activation ends). Null when the activation takes no events from a linked buffer.
+   */
+  @Nullable Link cursor;
+
   /** The calling thread's carrier, or null if it is running no activation. */
   static @Nullable Carrier current() {
     if (!Thread.currentThread().isVirtual() && PLATFORM_ACTIVATIONS.get() == 0) {

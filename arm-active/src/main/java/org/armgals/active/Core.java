@@ -19,10 +19,11 @@ import org.jspecify.annotations.Nullable;
  *
  * <p><b>Buffer.</b> Producers append with one atomic exchange on {@link #tail} (a Vyukov
  * multi-producer single-consumer linked queue whose nodes are the envelopes themselves); the
- * object's activation is the single consumer and owns {@link #head} and the private list of
- * deferred events, those it found not processable. {@link #size} counts both and is the capacity
- * check. An object whose policy is drop-oldest uses a {@link LockedBuffer} instead, since a
- * producer must then remove the oldest event.
+ * object's activation is the single consumer and owns {@link #head} (held in its carrier while it
+ * runs, so that taking an event writes nothing in the object) and the private list of deferred
+ * events, those it found not processable. {@link #size} counts both and is the capacity check. An
+ * object whose policy is drop-oldest uses a {@link LockedBuffer} instead, since a producer must
+ * then remove the oldest event.
  *
  * <p><b>Scheduling.</b> {@link #state} holds {@link #SCHEDULED} while the object is in its
  * runtime's run queue or being run, so at most one thread consumes at a time; {@link #STOPPED} once
@@ -31,7 +32,7 @@ import org.jspecify.annotations.Nullable;
  * idles (re-checking the buffer after clearing the flag so no wake-up is lost). A synchronous
  * object is scheduled only by its clock, once per instant.
  */
-final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
+final class Core<S> extends SenderSide implements ActiveObject<S> {
   static final int SCHEDULED = 1;
   static final int STOPPED = 2;
   static final int BATCH = 256;
@@ -52,19 +53,12 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       MethodHandles.Lookup l = MethodHandles.lookup();
       TAIL = l.findVarHandle(SenderSide.class, "tail", Link.class);
       SIZE = l.findVarHandle(SenderSide.class, "size", int.class);
-      STATE = l.findVarHandle(Core.class, "state", int.class);
-      RARE = l.findVarHandle(SenderSidePadding.class, "rare", Rare.class);
+      STATE = l.findVarHandle(SenderSide.class, "state", int.class);
+      RARE = l.findVarHandle(ReceiverSide.class, "rare", Rare.class);
     } catch (ReflectiveOperationException e) {
       throw new ExceptionInInitializerError(e);
     }
   }
-
-  private final S servant;
-
-  private volatile int state;
-
-  /** The buffer's first node: the last event taken, or this object itself. Consumer only. */
-  private Link head;
 
   private record GuardFailure(Envelope envelope, Throwable error) {}
 
@@ -122,14 +116,12 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   }
 
   Core(RuntimeImpl runtime, long id, S servant, ObjectConfig config) {
-    super(id, runtime, config);
-    this.servant = servant;
+    super(servant, runtime, id, config);
     boolean sync = config.mode() == Mode.SYNCHRONOUS;
     boolean dropOldest = config.overflow() instanceof OverflowPolicy.DropOldest;
     if (sync || dropOldest) {
       this.rare = new Rare(sync ? new Instant() : null, dropOldest ? new LockedBuffer() : null);
     }
-    this.head = this;
     // A plain write: the object is published safely (by the object table's release store), and a
     // volatile one would cost a fence per object created.
     TAIL.set(this, this);
@@ -183,8 +175,9 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
     return Carrier.running();
   }
 
+  @SuppressWarnings("unchecked") // spawned with an S
   S servant() {
-    return servant;
+    return (S) servant;
   }
 
   // ---------------------------------------------------------------- ActiveObject / ActiveRef
@@ -283,7 +276,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
 
   @Override
   public <I> I proxy(Class<I> type) {
-    return Proxies.create(this, servant, type);
+    return Proxies.create(this, servant(), type);
   }
 
   @Override
@@ -297,6 +290,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
         break;
       }
     }
+    stopped = true;
     runtime.unregister(this);
     if (config.clock() instanceof ClockSupport.Owner owner) {
       owner.support().unregister(this);
@@ -358,7 +352,8 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       runtime.countRejected();
       throw new ObjectStoppedException(address());
     }
-    LockedBuffer lb = locked();
+    // The rare fields are the receiving side's: a sender reads them only when it must.
+    LockedBuffer lb = config.overflow() instanceof OverflowPolicy.DropOldest ? locked() : null;
     if (lb != null) {
       Envelope dropped = lb.offer(e, config.capacity());
       if (dropped != null) {
@@ -458,8 +453,15 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   void run(Carrier carrier) {
     Core<?> outer = carrier.running; // a shutdown may run a stopped object inside an activation
     int outerTaken = carrier.taken;
+    int outerBatch = carrier.takenBatch;
+    Link outerCursor = carrier.cursor;
+    if (outer != null && outerCursor != null) {
+      outer.head = outerCursor; // this activation may take from the outer object's buffer
+    }
     carrier.running = this;
     carrier.taken = 0;
+    carrier.takenBatch = locked() == null ? takenBatch() : Integer.MAX_VALUE;
+    carrier.cursor = null;
     int processed = 0;
     boolean more = false;
     CountDownLatch released = null;
@@ -473,9 +475,10 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
         processed = runInstant(carrier);
       } else {
         Dispatcher dispatcher = runtime.dispatcher();
+        carrier.cursor = head;
         int linger = LINGER_SPINS;
         int budget = BATCH;
-        while ((state & STOPPED) == 0) {
+        while (!stopped) {
           if (budget == 0) {
             if (!dispatcher.nothingWaiting(carrier)) {
               more = true;
@@ -485,7 +488,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
             processed = 0;
             budget = BATCH;
           }
-          Envelope e = takeProcessable();
+          Envelope e = takeProcessable(carrier);
           if (e == null) {
             linger = lingerForEvents(carrier, linger);
             if (linger < 0) {
@@ -499,9 +502,15 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
         }
       }
     } finally {
+      Link cursor = carrier.cursor;
+      if (cursor != null) {
+        head = cursor;
+      }
       returnTaken(carrier);
       carrier.running = outer;
       carrier.taken = outerTaken;
+      carrier.takenBatch = outerBatch;
+      carrier.cursor = outer != null && outerCursor != null ? outer.head : null;
       runtime.countProcessed(carrier, processed);
       if (more) {
         runtime.dispatcher().requeue(this); // fairness: the back of the shared queue
@@ -548,7 +557,9 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       }
       spins -= wait;
       wait = Math.min(wait << 1, LINGER_MAX_INTERVAL);
-      if (lb != null ? lb.hasUnseen() : head.next() != null) {
+      if (lb != null
+          ? lb.hasUnseen()
+          : java.util.Objects.requireNonNull(carrier.cursor).next() != null) {
         dispatcher.lingerEnds(carrier);
         return Math.max(spins, 0);
       }
@@ -597,7 +608,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   }
 
   private void taken(Carrier carrier) {
-    if (++carrier.taken >= takenBatch() && locked() == null) {
+    if (++carrier.taken >= carrier.takenBatch) {
       returnTaken(carrier);
     }
   }
@@ -652,7 +663,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
   }
 
   /** The oldest processable event, or null if none; consumer only. */
-  private @Nullable Envelope takeProcessable() {
+  private @Nullable Envelope takeProcessable(Carrier carrier) {
     Rare r = rare;
     if (r != null) {
       LockedBuffer lb = r.locked;
@@ -675,7 +686,7 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
       r.dirty = false;
     }
     for (; ; ) {
-      Envelope e = pollInbox();
+      Envelope e = pollInbox(carrier);
       if (e == null) {
         return null;
       }
@@ -703,15 +714,17 @@ final class Core<S> extends SenderSidePadding implements ActiveObject<S> {
    * has swapped the tail but not linked it yet is seen on a later poll (the end-of-activation check
    * reads the tail, so it is never lost).
    */
-  private @Nullable Envelope pollInbox() {
-    Link n = head.next();
+  private @Nullable Envelope pollInbox(Carrier carrier) {
+    Link n = java.util.Objects.requireNonNull(carrier.cursor).next();
     if (n != null) {
-      head = n;
+      carrier.cursor = n;
     }
     return (Envelope) n; // this object is only ever the first node, never a linked one
   }
 
-  /** As {@link #pollInbox()}, but waits for a link in progress (all events up to the tail). */
+  /**
+   * As {@link #pollInbox(Carrier)}, but waits for a link in progress (all events up to the tail).
+   */
   private @Nullable Envelope pollInboxToTail() {
     Link h = head;
     Link n = h.next();

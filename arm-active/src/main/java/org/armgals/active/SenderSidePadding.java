@@ -3,37 +3,37 @@ package org.armgals.active;
 import org.jspecify.annotations.Nullable;
 
 /**
- * The fields between {@link SenderSide}'s and {@link Core}'s: those that neither the senders nor
- * the receiving object write on every event, then 24 bytes of padding, so that the senders' fields
- * and the receiver's are at least 48 bytes apart and share a cache line only for objects placed at
- * the one or two addresses in eight where they still do. An idle object costs at most 100 bytes in
- * all (decision 0045); padding to a whole line would cost 40 more.
+ * The fields between {@link ReceiverSide}'s and {@link SenderSide}'s: those that neither the
+ * senders nor the receiving object touch on every event, then 20 bytes of padding, so that the
+ * senders' fields start 72 bytes into the object. No line then holds both them and what lies before
+ * the object (usually its servant, written on every event), and the senders' tail and size share a
+ * line with the receiving side's fields at two of the eight places an object can start in a line
+ * (ObjectLayoutTest). An idle object costs at most 100 bytes in all (decision 0045).
  */
-abstract class SenderSidePadding extends SenderSide {
+abstract class SenderSidePadding extends ReceiverSide {
   /** The object's number in its runtime. */
   final long id;
 
   /** The object's runtime. */
   final RuntimeImpl runtime;
 
-  /** The object's configuration: its mode, capacity and overflow policy. */
-  final ObjectConfig config;
+  /**
+   * The buffer's first node: the last event taken, or this object itself. Consumer only; while an
+   * activation runs, its carrier's cursor stands for it (written back when the activation ends), so
+   * that taking an event writes nothing in the object.
+   */
+  Link head;
 
   /** The object's address, made on first use. */
   @Nullable Address address;
 
-  /**
-   * What few objects need, made on first need: the blocked senders, the future waited for, the
-   * deferred events, a synchronous object's instant, a drop-oldest object's buffer.
-   */
-  volatile Core.@Nullable Rare rare;
-
   @SuppressWarnings("unused")
-  private long p1, p2, p3;
+  private int p1, p2, p3, p4, p5;
 
-  SenderSidePadding(long id, RuntimeImpl runtime, ObjectConfig config) {
+  SenderSidePadding(Object servant, RuntimeImpl runtime, long id) {
+    super(servant);
     this.id = id;
     this.runtime = runtime;
-    this.config = config;
+    this.head = this;
   }
 }
