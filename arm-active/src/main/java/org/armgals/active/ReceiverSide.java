@@ -4,11 +4,12 @@ import org.jspecify.annotations.Nullable;
 
 /**
  * The fields of an active object that its own activation reads on every event it takes, and that no
- * sender reads or writes on a send. They come first in the object's layout (a superclass's fields
- * are laid out before its subclass's), right after the header, where the servant made just before
- * the object (the usual order: {@code spawn(new Servant())}) shares their cache line: the servant
- * is written by the same activation, so that sharing costs nothing. {@link SenderSide}'s fields
- * come last, after {@link SenderSidePadding} (decision 0078). See {@link Core}.
+ * sender reads or writes on an ordinary send. They come first in the object's layout (a
+ * superclass's fields are laid out before its subclass's), after the header and the two links, so
+ * that they share a cache line with the servant made just before the object (the usual order:
+ * {@code spawn(new Servant())}), which the same activation writes: that sharing costs nothing.
+ * {@link SenderSide}'s fields come last, after {@link SenderSidePadding} (decision 0078). See
+ * {@link Core}.
  */
 abstract class ReceiverSide extends RunQueue.Node {
   /** The object's servant. */
