@@ -264,6 +264,16 @@ final class SimulationImpl implements Simulation {
     fusePasses = false;
   }
 
+  /** The contacts made so far between two atoms: for tests. */
+  long atomContacts() {
+    return physics.atomContacts;
+  }
+
+  /** Each step's pairs of atoms from a search of the grid (decision 0076): for tests. */
+  void searchEveryStep() {
+    physics.searchEveryStep();
+  }
+
   private final IntConsumer drainPass = this::drain;
   private final IntConsumer drainServoPass = this::drainServo;
   private final IntConsumer drainLastPass = this::drainLast;
