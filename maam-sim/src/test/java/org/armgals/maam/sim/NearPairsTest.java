@@ -1,13 +1,10 @@
 package org.armgals.maam.sim;
 
-import static org.armgals.maam.sim.TestScenes.joints;
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.StringWriter;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
-import org.armgals.maam.spi.Leg;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -103,40 +100,13 @@ class NearPairsTest {
     assertThat(near.update(boxes, 10)).isFalse();
   }
 
-  /** A trace of a crowd of atoms close enough to touch, walking and pushed. */
-  private static Run crowdRun(LegDynamics dynamics, boolean listed) {
-    StringWriter out = new StringWriter();
-    try (Simulation s =
-        Simulation.builder(Scenes.grid(25, 0.12))
-            .legDynamics(dynamics)
-            .trace(out)
-            .controllers(
-                id -> {
-                  SplittableRandom random = new SplittableRandom(id);
-                  return (body, cycle) -> {
-                    joints(body).setLegTarget(Leg.MZ, random.nextDouble(-0.4, 0.4), 0.2);
-                    joints(body).setLegTarget(Leg.PX, random.nextDouble(-0.5, 0.5), 0);
-                  };
-                })
-            .build()) {
-      if (!listed) {
-        ((SimulationImpl) s).searchEveryStep();
-      }
-      s.runCycles(15);
-      s.push(7, new Vec3(3, 0, 0));
-      s.runCycles(15);
-      return new Run(out.toString(), ((SimulationImpl) s).atomContacts());
-    }
-  }
-
-  /** A run's trace, and the contacts made between two atoms. */
-  private record Run(String trace, long atomContacts) {}
-
   @ParameterizedTest
   @EnumSource(LegDynamics.class)
   void aCrowdRunsBitForBitAsWithTheGridSearchedEveryStep(LegDynamics dynamics) {
-    Run listed = crowdRun(dynamics, true);
+    TestScenes.CrowdRun listed = TestScenes.crowd(dynamics, 25, 0.12, 1, s -> {});
+    TestScenes.CrowdRun searched =
+        TestScenes.crowd(dynamics, 25, 0.12, 1, SimulationImpl::searchEveryStep);
     assertThat(listed.atomContacts()).isPositive();
-    assertThat(listed).isEqualTo(crowdRun(dynamics, false));
+    assertThat(listed).isEqualTo(searched);
   }
 }
