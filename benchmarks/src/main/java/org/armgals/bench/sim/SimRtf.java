@@ -146,15 +146,17 @@ public final class SimRtf {
 
   /**
    * Reads the body's battery and swings the three upper legs of the tripod, each in its own plane
-   * (the diagonal one a little wider).
+   * (the diagonal one a little wider): confined to its atom, so on several threads the controllers
+   * run at once.
    */
   private static Controller swing(int id) {
-    return (body, cycle) -> {
-      double energy = body.read(Atom.BATTERY);
-      double a = energy > 0 ? 0.4 * Math.sin(cycle * 0.05 + id) : 0;
-      body.command(Atom.target(Leg.PX), LegAngles.swing(a, -Math.PI / 2));
-      body.command(Atom.target(Leg.PY), LegAngles.swing(a, 0));
-      body.command(Atom.target(Leg.PZ), LegAngles.swing(Math.sqrt(2) * a, -3 * Math.PI / 4));
-    };
+    return Controller.confined(
+        (body, cycle) -> {
+          double energy = body.read(Atom.BATTERY);
+          double a = energy > 0 ? 0.4 * Math.sin(cycle * 0.05 + id) : 0;
+          body.command(Atom.target(Leg.PX), LegAngles.swing(a, -Math.PI / 2));
+          body.command(Atom.target(Leg.PY), LegAngles.swing(a, 0));
+          body.command(Atom.target(Leg.PZ), LegAngles.swing(Math.sqrt(2) * a, -3 * Math.PI / 4));
+        });
   }
 }

@@ -50,16 +50,7 @@ final class AtomGrid {
       heads = new int[size];
       mask = size - 1;
     }
-    double widest = 0;
-    for (int i = 0; i < count; i++) {
-      int o = 6 * i;
-      widest = Math.max(widest, Math.max(box[o + 1] - box[o], box[o + 3] - box[o + 2]));
-    }
-    // A box as wide as a cell spans at most two cells on an axis; a degenerate or broken box
-    // (NaN) leaves the cell as it was.
-    if (widest > 0 && widest < Double.POSITIVE_INFINITY) {
-      cell = widest;
-    }
+    fitCells(boxes, count);
     Arrays.fill(heads, -1);
     for (int i = 0; i < count; i++) {
       int x = cellOf(box[6 * i]);
@@ -70,6 +61,36 @@ final class AtomGrid {
       next[i] = heads[h];
       heads[h] = i;
     }
+  }
+
+  /**
+   * Sizes the cells for {@code count} boxes as {@link #rebuild} does, filing none: as wide as the
+   * widest box, so that a box spans at most two cells on an axis. A degenerate or broken box (NaN)
+   * leaves the cells as they were.
+   */
+  void fitCells(double[] boxes, int count) {
+    double widest = 0;
+    for (int o = 0; o < 6 * count; o += 6) {
+      widest = Math.max(widest, Math.max(boxes[o + 1] - boxes[o], boxes[o + 3] - boxes[o + 2]));
+    }
+    if (widest > 0 && widest < Double.POSITIVE_INFINITY) {
+      cell = widest;
+    }
+  }
+
+  /**
+   * Where {@link #forEachPairOf forEachPairOf(a, ...)} visits the cell of the box at {@code b} in
+   * {@code boxes}, for the box at {@code a} (offsets into {@code boxes}), with the cells as last
+   * {@link #fitCells fitted}: the cells it visits are numbered 0 to 8 in its order, and -1 is one
+   * it does not visit. Within a cell it visits atoms from the last to the first.
+   */
+  int visitOrder(double[] boxes, int a, int b) {
+    int dx = cellOf(boxes[b]) - cellOf(boxes[a]);
+    int dy = cellOf(boxes[b + 2]) - cellOf(boxes[a + 2]);
+    if (dx < -1 || dx > 1 || dy < -1 || dy > 1) {
+      return -1;
+    }
+    return 3 * (dy + 1) + dx + 1;
   }
 
   /** Visits every pair of atoms whose boxes overlap, each once. */

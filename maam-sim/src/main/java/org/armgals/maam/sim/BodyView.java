@@ -2,13 +2,16 @@ package org.armgals.maam.sim;
 
 import static java.util.Objects.requireNonNull;
 
+import java.util.ArrayList;
 import java.util.List;
 import org.armgals.maam.spi.Leg;
 
 /**
  * An atom's sensors and actuators in the physics' terms (a leg's target is the joint's two axis
  * angles): what {@link SimBody}, the public face of an atom, drives, and what the simulator's own
- * tests drive directly. Confined to the simulation's thread.
+ * tests drive directly. Confined to the simulation's thread, but while {@linkplain
+ * org.armgals.maam.sim.spi.Controller#confined confined controllers} run on the lanes: then its
+ * atom's controller alone drives it, on its lane.
  */
 final class BodyView {
 
@@ -73,18 +76,59 @@ final class BodyView {
 
   /** Locks {@code leg}'s connector: it binds to the first locked tip within tolerance. */
   void bind(Leg leg) {
-    model.leg(requireNonNull(leg, "leg")).locked = true;
+    LegModel locked = model.leg(requireNonNull(leg, "leg"));
+    if (simulation.controllingOnLanes()) {
+      deferred.add(() -> locked.locked = true);
+      return;
+    }
+    locked.locked = true;
   }
 
   /** Unlocks {@code leg}'s connector, releasing its binding if it has one. */
   void unbind(Leg leg) {
-    simulation.unbind(model.leg(requireNonNull(leg, "leg")));
+    LegModel unlocked = model.leg(requireNonNull(leg, "leg"));
+    if (simulation.controllingOnLanes()) {
+      deferred.add(() -> simulation.unbind(unlocked));
+      return;
+    }
+    simulation.unbind(unlocked);
   }
 
-  /** Sends {@code payload} through {@code leg}'s binding; false if not bound or failed. */
+  /**
+   * Sends {@code payload} through {@code leg}'s binding; false if not bound or failed. From a
+   * controller on a lane the message goes after the pass, and the answer is as of the pass's start
+   * (a binding released in the same cycle is not seen).
+   */
   boolean send(Leg leg, String payload) {
     requireNonNull(payload, "payload");
-    return simulation.send(model.leg(requireNonNull(leg, "leg")), payload);
+    LegModel from = model.leg(requireNonNull(leg, "leg"));
+    if (simulation.controllingOnLanes()) {
+      deferred.add(() -> simulation.send(from, payload));
+      return !model.failed && !from.failed && from.binding != null;
+    }
+    return simulation.send(from, payload);
+  }
+
+  /**
+   * The binds, unbinds and sends of this atom's controller while it ran on a lane, in its order:
+   * they write what other atoms read, so they wait for the pass's end (see {@link
+   * org.armgals.maam.sim.spi.Controller#confined}).
+   */
+  private final List<Runnable> deferred = new ArrayList<>(0);
+
+  /** Carries out the {@link #deferred} commands, in order, on the simulation's thread. */
+  void runDeferred() {
+    if (!deferred.isEmpty()) {
+      for (Runnable command : deferred) {
+        command.run();
+      }
+      deferred.clear();
+    }
+  }
+
+  /** Drops the {@link #deferred} commands of a pass that failed. */
+  void dropDeferred() {
+    deferred.clear();
   }
 
   /** The messages that arrived at the start of this control cycle, oldest first. */

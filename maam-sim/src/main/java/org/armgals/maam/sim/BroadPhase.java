@@ -8,9 +8,10 @@ import org.ode4j.ode.DGeom;
 
 /**
  * Which pairs of geometries the narrow phase ({@link Physics}'s near callback) looks at: the parts
- * of atoms whose boxes overlap, found with an {@link AtomGrid}; an atom's parts and what of the
- * {@link Ground} they overlap; and, while sensing, rays and what they overlap, through a {@link
- * RayCaster} per lane (decisions 0062, 0075).
+ * of atoms whose boxes overlap, in the order an {@link AtomGrid} gives them, from lists kept over
+ * steps ({@link NearPairs}); an atom's parts and what of the {@link Ground} they overlap; and,
+ * while sensing, rays and what they overlap, through a {@link RayCaster} per lane (decisions 0062,
+ * 0075, 0076).
  *
  * <p>The solver visits each body's contacts in the order they were made, so the pairs come in the
  * order the engine's hash space gave them wherever that order can be kept: each atom's pairs with
@@ -30,6 +31,13 @@ final class BroadPhase {
   private double[] boxes = new double[0];
 
   private final AtomGrid grid = new AtomGrid();
+
+  /** The pairs of atoms that may touch, without searching the grid each step (decision 0076). */
+  private final NearPairs nearPairs = new NearPairs();
+
+  /** Whether each step files every atom in the grid and searches it: for tests. */
+  private boolean searchEveryStep;
+
   private final double[] box = new double[6];
   private final double[] other = new double[6];
   private final double[] groundBox = new double[6];
@@ -109,12 +117,23 @@ final class BroadPhase {
   /**
    * Calls the near callback on this step's pairs, every atom {@link #prepare prepared}: for each
    * atom in turn, its pairs with the atoms after it, then (as all its pairs with other atoms are
-   * made) its pairs with the obstacles and the ground, unless they are left out.
+   * made) its pairs with the obstacles and the ground, unless they are left out. The pairs of atoms
+   * come from the {@link NearPairs} lists in the grid's order, or, while a box is not finite, from
+   * the grid, every box filed.
    */
   void collide() {
-    grid.rebuild(boxes, atoms.size());
+    boolean listed = !searchEveryStep && nearPairs.update(boxes, atoms.size());
+    if (listed) {
+      grid.fitCells(boxes, atoms.size());
+    } else {
+      grid.rebuild(boxes, atoms.size());
+    }
     for (int i = 0; i < atoms.size(); i++) {
-      grid.forEachPairOf(i, pairs);
+      if (listed) {
+        nearPairs.forEachPairOf(i, boxes, grid, pairs);
+      } else {
+        grid.forEachPairOf(i, pairs);
+      }
       if (quiet[i] && !joined[i]) {
         // The solver would ignore its contacts with what does not move.
         continue;
@@ -136,6 +155,14 @@ final class BroadPhase {
         }
       }
     }
+  }
+
+  /**
+   * Searches the grid for each step's pairs, as before decision 0076: for the test that holds both
+   * ways to the same run.
+   */
+  void searchEveryStep() {
+    searchEveryStep = true;
   }
 
   /** Two atoms whose boxes overlap: their parts, unless neither atom moves. */

@@ -98,15 +98,22 @@ final class Lanes implements AutoCloseable {
     for (Worker w : workers) {
       LockSupport.unpark(w.thread);
     }
-    run(work, 0, lanes(), count);
     Throwable failure = null;
+    try {
+      run(work, 0, lanes(), count);
+    } catch (RuntimeException | Error e) {
+      // The workers are still at the pass: it ends only when they are done.
+      failure = e;
+    }
     for (Worker w : workers) {
       callerIdle.reset();
       while (w.done != next) {
         callerIdle.idle();
       }
       if (w.failure != null) {
-        failure = w.failure;
+        if (failure == null) {
+          failure = w.failure;
+        }
         w.failure = null;
       }
     }

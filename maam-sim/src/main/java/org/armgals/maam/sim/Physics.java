@@ -167,6 +167,9 @@ final class Physics {
     contacts.empty();
   }
 
+  /** The contacts made so far between two atoms: for tests, to tell that atoms met. */
+  long atomContacts;
+
   private final DGeom.DNearCallback nearCallback = this::near;
 
   private void near(Object data, DGeom o1, DGeom o2) {
@@ -221,6 +224,9 @@ final class Physics {
       }
       touch(t1, t2, contact.geom.pos);
       touch(t2, t1, contact.geom.pos);
+    }
+    if (n > 0 && t1.atom() != null && t2.atom() != null) {
+      atomContacts += n;
     }
     if (n > 0 && b1 != null && b2 != null) {
       broadPhase.joined(t1.atom());
@@ -346,6 +352,11 @@ final class Physics {
         leg.touchingAtom = true;
       }
     }
+  }
+
+  /** Searches the grid for each step's pairs of atoms: see {@link BroadPhase#searchEveryStep}. */
+  void searchEveryStep() {
+    broadPhase.searchEveryStep();
   }
 
   void destroy() {

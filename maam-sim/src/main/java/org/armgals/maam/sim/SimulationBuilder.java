@@ -87,8 +87,9 @@ public final class SimulationBuilder {
 
   /**
    * How many threads a physics step's work on the atoms is spread over, the calling thread among
-   * them; default 1. The trace is the same, bit for bit, on any number; more than one pays off from
-   * a few hundred atoms on, on as many free cores.
+   * them, and the controllers too if all are {@link Controller#confined confined}; default 1. The
+   * trace is the same, bit for bit, on any number; more than one pays off from a few hundred atoms
+   * on, on as many free cores.
    */
   public SimulationBuilder threads(int threads) {
     if (threads < 1) {

@@ -79,6 +79,7 @@ final class SimulationImpl implements Simulation {
       views[atom.index] = bodies.get(atom.id);
       Controller c = b.controllerById.get(atom.id);
       controllers[atom.index] = c != null ? c : b.controllers.apply(atom.id);
+      unconfined += controllers[atom.index].isConfined() ? 0 : 1;
     }
     for (Scene.Bond bond : scene.bonds()) {
       LegModel a = bodies.get(bond.atomA()).model.leg(bond.legA());
@@ -139,7 +140,10 @@ final class SimulationImpl implements Simulation {
 
   @Override
   public void setController(int id, Controller controller) {
-    controllers[view(id).model.index] = java.util.Objects.requireNonNull(controller, "controller");
+    java.util.Objects.requireNonNull(controller, "controller");
+    int index = view(id).model.index;
+    unconfined += (controller.isConfined() ? 0 : 1) - (controllers[index].isConfined() ? 0 : 1);
+    controllers[index] = controller;
   }
 
   @Override
@@ -167,11 +171,7 @@ final class SimulationImpl implements Simulation {
     senseAll();
     messages.deliver(start);
     bindLockedTips();
-    for (AtomModel atom : atoms) {
-      if (!atom.failed) {
-        controllers[atom.index].onCycle(views[atom.index].body, cycle);
-      }
-    }
+    runControllers();
     boolean servoed = false;
     for (int i = 0; i < stepsPerCycle; i++) {
       servoed = physicsStep(servoed, i == stepsPerCycle - 1);
@@ -188,6 +188,58 @@ final class SimulationImpl implements Simulation {
     events.clear();
     cycle++;
     pacer.pace(timeNanos);
+  }
+
+  /**
+   * Every working atom's controller, in atom order; if they are all {@link Controller#confined
+   * confined} and there are lanes, on the lanes at once (decision 0077). A confined controller
+   * reads its own atom's readings and inbox, and writes its own atom's legs; the binds, unbinds and
+   * sends it makes, which write what other atoms read, wait in its view until the pass is over, and
+   * are carried out then in atom order: in the order one thread would carry them out, since no
+   * controller reads, during the pass, what they write.
+   */
+  private void runControllers() {
+    if (lanes.lanes() == 1 || unconfined > 0) {
+      for (int i = 0; i < atoms.size(); i++) {
+        control(i);
+      }
+      return;
+    }
+    controllingOnLanes = true;
+    try {
+      lanes.forEach(atoms.size(), controlPass);
+    } catch (RuntimeException | Error e) {
+      for (BodyView view : views) {
+        view.dropDeferred();
+      }
+      throw e;
+    } finally {
+      controllingOnLanes = false;
+    }
+    for (BodyView view : views) {
+      view.runDeferred();
+    }
+  }
+
+  private void control(int i) {
+    if (!atoms.get(i).failed) {
+      controllers[i].onCycle(views[i].body, cycle);
+    }
+  }
+
+  private final IntConsumer controlPass = this::control;
+
+  /** How many atoms' controllers are not {@link Controller#confined confined}. */
+  private int unconfined;
+
+  /**
+   * Whether the controllers are running on the lanes: then binds, unbinds and sends wait (see
+   * {@link #runControllers}). Written before and after the pass, read in it.
+   */
+  private boolean controllingOnLanes;
+
+  boolean controllingOnLanes() {
+    return controllingOnLanes;
   }
 
   /**
@@ -262,6 +314,16 @@ final class SimulationImpl implements Simulation {
   /** Every step's drain and servos in passes of their own, as with bindings: for tests. */
   void separatePasses() {
     fusePasses = false;
+  }
+
+  /** The contacts made so far between two atoms: for tests. */
+  long atomContacts() {
+    return physics.atomContacts;
+  }
+
+  /** Each step's pairs of atoms from a search of the grid (decision 0076): for tests. */
+  void searchEveryStep() {
+    physics.searchEveryStep();
   }
 
   private final IntConsumer drainPass = this::drain;

@@ -75,6 +75,30 @@ class LanesTest {
   }
 
   @Test
+  void aFailureInTheCallersLaneIsThrownOnlyOnceEveryLaneIsDone() {
+    int count = 2 * Lanes.MIN_PER_LANE;
+    AtomicIntegerArray visits = new AtomicIntegerArray(count);
+    try (Lanes lanes = new Lanes(2, "test")) {
+      assertThatThrownBy(
+              () ->
+                  lanes.forEach(
+                      count,
+                      i -> {
+                        if (i == 0) {
+                          throw new IllegalStateException("atom 0 broke");
+                        }
+                        visits.incrementAndGet(i);
+                      }))
+          .isInstanceOf(IllegalStateException.class)
+          .hasMessage("atom 0 broke");
+      // The other lane's half was done by the time the failure was thrown.
+      for (int i = count / 2; i < count; i++) {
+        assertThat(visits.get(i)).as("index %d", i).isEqualTo(1);
+      }
+    }
+  }
+
+  @Test
   void refusesFewerThanOneLane() {
     assertThatThrownBy(() -> new Lanes(0, "test"))
         .isInstanceOf(IllegalArgumentException.class)

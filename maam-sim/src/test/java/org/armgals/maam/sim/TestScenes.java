@@ -1,8 +1,12 @@
 package org.armgals.maam.sim;
 
+import java.io.StringWriter;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.SplittableRandom;
+import java.util.function.Consumer;
 import org.armgals.maam.spi.Body;
+import org.armgals.maam.spi.Leg;
 
 /** Scenes the tests share, and the way in to an atom's physics for the tests of the physics. */
 final class TestScenes {
@@ -32,6 +36,44 @@ final class TestScenes {
       }
     }
     return sensed;
+  }
+
+  /** A crowd's run: its trace, and the contacts made between two atoms. */
+  record CrowdRun(String trace, long atomContacts) {}
+
+  /**
+   * A crowd of {@code atoms} tripods {@code spacing} m apart on a grid, walking with seeded random
+   * targets, on {@code threads}, atom 1 pushed after 10 cycles, 20 cycles; {@code setup} may switch
+   * the simulation's ways of working before the first cycle.
+   */
+  static CrowdRun crowd(
+      LegDynamics dynamics,
+      int atoms,
+      double spacing,
+      int threads,
+      Consumer<SimulationImpl> setup) {
+    StringWriter out = new StringWriter();
+    try (Simulation s =
+        Simulation.builder(Scenes.grid(atoms, spacing))
+            .legDynamics(dynamics)
+            .threads(threads)
+            .trace(out)
+            .controllers(
+                id -> {
+                  SplittableRandom random = new SplittableRandom(id);
+                  return (body, cycle) -> {
+                    joints(body).setLegTarget(Leg.MZ, random.nextDouble(-0.4, 0.4), 0.2);
+                    joints(body).setLegTarget(Leg.PX, random.nextDouble(-0.5, 0.5), 0);
+                  };
+                })
+            .build()) {
+      SimulationImpl impl = (SimulationImpl) s;
+      setup.accept(impl);
+      s.runCycles(10);
+      s.push(1, new Vec3(2, 0, 0));
+      s.runCycles(10);
+      return new CrowdRun(out.toString(), impl.atomContacts());
+    }
   }
 
   /** Two upright atoms in free space, +x of atom 1 facing -x of atom 2 across {@code gap} m. */
