@@ -132,7 +132,7 @@ final class Core<S> extends SenderSide implements ActiveObject<S> {
     Rare r = rare;
     if (r == null) {
       RARE.compareAndSet(this, null, new Rare(null, null));
-      r = java.util.Objects.requireNonNull(rare);
+      r = requireNonNull(rare);
     }
     return r;
   }
@@ -469,7 +469,7 @@ final class Core<S> extends SenderSide implements ActiveObject<S> {
       if ((state & STOPPED) != 0) {
         cancelQueued();
       } else if (config.mode() == Mode.SYNCHRONOUS) {
-        Instant i = java.util.Objects.requireNonNull(instant());
+        Instant i = requireNonNull(instant());
         released = i.done;
         i.done = null;
         processed = runInstant(carrier);
@@ -557,9 +557,7 @@ final class Core<S> extends SenderSide implements ActiveObject<S> {
       }
       spins -= wait;
       wait = Math.min(wait << 1, LINGER_MAX_INTERVAL);
-      if (lb != null
-          ? lb.hasUnseen()
-          : java.util.Objects.requireNonNull(carrier.cursor).next() != null) {
+      if (lb != null ? lb.hasUnseen() : requireNonNull(carrier.cursor).next() != null) {
         dispatcher.lingerEnds(carrier);
         return Math.max(spins, 0);
       }
@@ -715,7 +713,7 @@ final class Core<S> extends SenderSide implements ActiveObject<S> {
    * reads the tail, so it is never lost).
    */
   private @Nullable Envelope pollInbox(Carrier carrier) {
-    Link n = java.util.Objects.requireNonNull(carrier.cursor).next();
+    Link n = requireNonNull(carrier.cursor).next();
     if (n != null) {
       carrier.cursor = n;
     }
@@ -846,7 +844,7 @@ final class Core<S> extends SenderSide implements ActiveObject<S> {
     } else {
       // The last node linked now: events whose place was reserved but that are not linked yet
       // were sent at the same time as the release, and belong to the next instant.
-      java.util.Objects.requireNonNull(instant()).releasedTail = tail;
+      requireNonNull(instant()).releasedTail = tail;
     }
   }
 
@@ -858,7 +856,7 @@ final class Core<S> extends SenderSide implements ActiveObject<S> {
         return false;
       }
       if (STATE.compareAndSet(this, 0, SCHEDULED)) {
-        Instant i = java.util.Objects.requireNonNull(instant());
+        Instant i = requireNonNull(instant());
         i.number = instant;
         i.done = done;
         runtime.dispatcher().schedule(this);
@@ -903,7 +901,7 @@ final class Core<S> extends SenderSide implements ActiveObject<S> {
       lb.takeReleased(batch);
     } else {
       takeDeferred(batch);
-      Link last = java.util.Objects.requireNonNull(instant()).releasedTail;
+      Link last = requireNonNull(instant()).releasedTail;
       if (last != null && last != head) {
         for (Envelope e = pollInboxToTail(); e != null; e = pollInboxToTail()) {
           batch.add(e);
@@ -917,7 +915,7 @@ final class Core<S> extends SenderSide implements ActiveObject<S> {
     int processed = processInstant(carrier, batch, lb);
     if (servant instanceof ReactiveCycle rc && (state & STOPPED) == 0) {
       try {
-        rc.onCycle(java.util.Objects.requireNonNull(instant()).number);
+        rc.onCycle(requireNonNull(instant()).number);
       } catch (Throwable t) {
         ActiveRuntimeErrors.throwIfFatal(t);
         runtime.reportFailure(this, null, t);
