@@ -104,7 +104,7 @@ final class BodyView {
     LegModel from = model.leg(requireNonNull(leg, "leg"));
     if (simulation.controllingOnLanes()) {
       deferred.add(() -> simulation.send(from, payload));
-      return !model.failed && !from.failed && from.binding != null;
+      return SimulationImpl.canSend(from);
     }
     return simulation.send(from, payload);
   }

@@ -547,12 +547,16 @@ final class SimulationImpl implements Simulation {
     }
   }
 
+  /** Whether a message sent from {@code leg} now goes: its atom and it work, and it is bound. */
+  static boolean canSend(LegModel leg) {
+    return !leg.atom.failed && !leg.failed && leg.binding != null;
+  }
+
   boolean send(LegModel leg, String payload) {
-    Binding b = leg.binding;
-    if (leg.atom.failed || leg.failed || b == null) {
+    if (!canSend(leg)) {
       return false;
     }
-    LegModel to = b.other(leg);
+    LegModel to = java.util.Objects.requireNonNull(leg.binding).other(leg);
     ReceivedMessage m = new ReceivedMessage(leg.atom.id, leg.leg, to.leg, timeNanos, payload);
     if (!messages.send(timeNanos, to.atom, m)) {
       events.add(new SimEvent.MessageLost(timeNanos, leg.atom.id, leg.leg));
