@@ -79,7 +79,6 @@ final class SimulationImpl implements Simulation {
       views[atom.index] = bodies.get(atom.id);
       Controller c = b.controllerById.get(atom.id);
       controllers[atom.index] = c != null ? c : b.controllers.apply(atom.id);
-      unconfined += controllers[atom.index].isConfined() ? 0 : 1;
     }
     for (Scene.Bond bond : scene.bonds()) {
       LegModel a = bodies.get(bond.atomA()).model.leg(bond.legA());
@@ -140,10 +139,7 @@ final class SimulationImpl implements Simulation {
 
   @Override
   public void setController(int id, Controller controller) {
-    java.util.Objects.requireNonNull(controller, "controller");
-    int index = view(id).model.index;
-    unconfined += (controller.isConfined() ? 0 : 1) - (controllers[index].isConfined() ? 0 : 1);
-    controllers[index] = controller;
+    controllers[view(id).model.index] = java.util.Objects.requireNonNull(controller, "controller");
   }
 
   @Override
@@ -199,7 +195,7 @@ final class SimulationImpl implements Simulation {
    * controller reads, during the pass, what they write.
    */
   private void runControllers() {
-    if (lanes.lanes() == 1 || unconfined > 0) {
+    if (lanes.lanes() == 1 || !allConfined()) {
       for (int i = 0; i < atoms.size(); i++) {
         control(i);
       }
@@ -229,8 +225,15 @@ final class SimulationImpl implements Simulation {
 
   private final IntConsumer controlPass = this::control;
 
-  /** How many atoms' controllers are not {@link Controller#confined confined}. */
-  private int unconfined;
+  /** Whether every atom's controller is {@link Controller#confined confined}. */
+  private boolean allConfined() {
+    for (Controller c : controllers) {
+      if (!c.isConfined()) {
+        return false;
+      }
+    }
+    return true;
+  }
 
   /**
    * Whether the controllers are running on the lanes: then binds, unbinds and sends wait (see
