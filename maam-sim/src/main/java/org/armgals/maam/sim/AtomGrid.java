@@ -69,13 +69,22 @@ final class AtomGrid {
    * leaves the cells as they were.
    */
   void fitCells(double[] boxes, int count) {
+    double widest = widest(boxes, count);
+    if (widest > 0 && widest < Double.POSITIVE_INFINITY) {
+      cell = widest;
+    }
+  }
+
+  /**
+   * The widest of {@code count} boxes (box i at 6i in {@code boxes}) on the ground's plane: its
+   * width along x or y, whichever is greater. NaN if a box is broken.
+   */
+  static double widest(double[] boxes, int count) {
     double widest = 0;
     for (int o = 0; o < 6 * count; o += 6) {
       widest = Math.max(widest, Math.max(boxes[o + 1] - boxes[o], boxes[o + 3] - boxes[o + 2]));
     }
-    if (widest > 0 && widest < Double.POSITIVE_INFINITY) {
-      cell = widest;
-    }
+    return widest;
   }
 
   /**

@@ -51,20 +51,12 @@ final class NearPairs {
       return true;
     }
     this.count = -1;
-    double widest = 0;
-    for (int o = 0; o < 6 * count; o += 6) {
-      for (int axis = 0; axis < 6; axis += 2) {
-        double min = boxes[o + axis];
-        double max = boxes[o + axis + 1];
-        if (!Double.isFinite(min) || !Double.isFinite(max)) {
-          return false;
-        }
-        if (axis < 4) {
-          widest = Math.max(widest, max - min);
-        }
+    for (int o = 0; o < 6 * count; o++) {
+      if (!Double.isFinite(boxes[o])) {
+        return false;
       }
     }
-    make(boxes, count, Math.max(MARGIN * widest, 1e-6));
+    make(boxes, count, Math.max(MARGIN * AtomGrid.widest(boxes, count), 1e-6));
     return true;
   }
 
