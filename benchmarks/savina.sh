@@ -6,6 +6,8 @@
 #              all = armgals, pekko and yardstick (hand-written actors on a fork-join pool)
 #   --warmup n, --warmup-seconds s   warm up each workload by at least n runs (default 2) and
 #              s seconds (default 5); --runs n   measured runs (default 3)
+#   --cpus l   run each JVM on the CPUs in list l only (taskset -c l, e.g. 0 or 0,1); the
+#              runtimes size their thread pools from the CPUs the JVM sees
 #   --no-build use benchmarks/target/benchmarks.jar as it is
 #
 # Builds benchmarks/target/benchmarks.jar with the Maven wrapper, then runs each workload of each
@@ -26,6 +28,7 @@ warmup=2
 warmup_seconds=5
 runs=3
 build=1
+cpus=""
 while (($#)); do
   case "$1" in
     --impl)
@@ -41,8 +44,15 @@ while (($#)); do
     --warmup) warmup="${2:?--warmup needs a count}"; shift 2 ;;
     --warmup-seconds) warmup_seconds="${2:?--warmup-seconds needs a count}"; shift 2 ;;
     --runs) runs="${2:?--runs needs a count}"; shift 2 ;;
+    --cpus)
+      cpus="${2:-}"
+      if [[ ! "$cpus" =~ ^[0-9]+([-,][0-9]+)*$ ]]; then
+        echo "savina.sh: --cpus takes a CPU list such as 0 or 0,1 or 0-1, not '$cpus'" >&2
+        exit 2
+      fi
+      shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "savina.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) names+=("$1"); shift ;;
   esac
@@ -64,12 +74,17 @@ if (($(jdk_major "$(dirname "$(dirname "$java")")") >= 23)); then
   # Pekko still uses sun.misc.Unsafe; say it is allowed, as it is by default, without the warning.
   opts+=(--sun-misc-unsafe-memory-access=allow)
 fi
-echo "# $("$java" -version 2>&1 | head -1); options: ${opts[*]}; $(nproc) cores" >&2
+pin=()
+if [[ -n "$cpus" ]]; then
+  command -v taskset >/dev/null || { echo "savina.sh: --cpus needs taskset (util-linux)" >&2; exit 1; }
+  pin=(taskset -c "$cpus")
+fi
+echo "# $("$java" -version 2>&1 | head -1); options: ${opts[*]}; $(nproc) cores${cpus:+, on CPUs $cpus}" >&2
 # Workload outside, implementation inside: on a shared, noisy machine the implementations of
 # one workload then run minutes apart at most, under much the same load.
 for name in "${names[@]}"; do
   for impl in "${impls[@]}"; do
-    "$java" "${opts[@]}" -cp "$jar" org.armgals.bench.savina.Savina \
+    "${pin[@]}" "$java" "${opts[@]}" -cp "$jar" org.armgals.bench.savina.Savina \
       --impl "$impl" --warmup "$warmup" --warmup-seconds "$warmup_seconds" --runs "$runs" "$name"
   done
 done

@@ -5,7 +5,9 @@
  * benchmarks/savina.sh} and {@code docs/benchmarks.md}).
  *
  * <p>This package holds what the implementations share: the workload sizes, the run protocol, the
- * checks and the heap probe, so that no side measures differently.
+ * checks and the heap probe, so that no side measures differently; and {@link
+ * org.armgals.bench.savina.LineRoundTrip}, what moving a cache line between two cores costs on the
+ * machine, the floor under every hand-over between threads on different cores.
  */
 @NullMarked
 package org.armgals.bench.savina;
