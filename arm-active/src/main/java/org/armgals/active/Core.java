@@ -516,7 +516,9 @@ final class Core<S> extends SenderSide implements ActiveObject<S> {
         runtime.dispatcher().requeue(this); // fairness: the back of the shared queue
       } else {
         roomMade();
-        restub();
+        if (!stopped) {
+          restub(); // a stopped object does not go idle: one compare-and-set less as it stops
+        }
         STATE.getAndBitwiseAnd(this, ~SCHEDULED);
       }
       // The instant ends only once the object can be released again.

@@ -14,11 +14,11 @@ import org.jspecify.annotations.Nullable;
  * handed out and every object numbered in it has been removed.
  *
  * <p>Numbering, insertion, removal and lookups are lock-free: a number is one atomic increment, a
- * slot is set by a release store and cleared by a compare-and-set, and each chunk counts its
- * removals; the count of live objects is computed from those, not kept. Only making a chunk,
- * growing the array of chunks and freeing a chunk take a lock, once per {@link #CHUNK} objects (an
- * object created and stopped per message, as in a creation workload, made the lock per object
- * contended: the creator and the stopping objects run on different workers).
+ * slot is set and cleared by release stores (each object is removed once at most), and each chunk
+ * counts its removals; the count of live objects is computed from those, not kept. Only making a
+ * chunk, growing the array of chunks and freeing a chunk take a lock, once per {@link #CHUNK}
+ * objects (an object created and stopped per message, as in a creation workload, made the lock per
+ * object contended: the creator and the stopping objects run on different workers).
  */
 final class ObjectTable {
   static final int CHUNK = 1024;
@@ -71,12 +71,18 @@ final class ObjectTable {
     return core;
   }
 
-  /** Removes {@code core} if it is there. */
+  /**
+   * Removes {@code core} if it is there. An object is removed once at most (by the one call of its
+   * {@code stop()} that sets its stopped bit), and its slot never holds another object: a check and
+   * a release store do, with no compare-and-set.
+   */
   void remove(Core<?> core) {
     Chunk chunk = chunk(chunkOf(core.id));
-    if (chunk == null || !SLOT.compareAndSet(chunk.slots, slotOf(core.id), core, (Core<?>) null)) {
+    int slot = slotOf(core.id);
+    if (chunk == null || SLOT.getAcquire(chunk.slots, slot) != core) {
       return;
     }
+    SLOT.setRelease(chunk.slots, slot, (Core<?>) null);
     gone(core.id);
   }
 

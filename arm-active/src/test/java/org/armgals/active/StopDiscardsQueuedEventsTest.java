@@ -59,4 +59,35 @@ class StopDiscardsQueuedEventsTest {
       assertThat(startedAfterStop).as("requests that started after stop() returned").hasValue(0);
     }
   }
+
+  @Test
+  void anObjectThatStopsItselfLeavesTheRuntimeAndFailsWhatIsQueuedBehind() throws Exception {
+    try (LiveRuntime live = new LiveRuntime("stop-itself")) {
+      CountDownLatch release = new CountDownLatch(1);
+      ActiveObject<Object> object = live.spawn(new Object(), ObjectConfig.asynchronous());
+      Address address = object.address();
+
+      FutureValue<String> last =
+          object.call(
+              s -> {
+                release.await();
+                ActiveContext.current().orElseThrow().stop();
+                return "stopped itself";
+              });
+      FutureValue<Integer> behind = object.call(s -> 1);
+      release.countDown();
+
+      assertThat(last.getValue(PATIENCE)).isEqualTo("stopped itself");
+      assertThat(catchThrowable(() -> behind.getValue(PATIENCE)))
+          .as("a request queued behind the one that stopped the object")
+          .isInstanceOf(ObjectStoppedException.class);
+      assertThat(object.isStopped()).isTrue();
+      assertThat(object.queueDepth()).isZero();
+      assertThat(catchThrowable(() -> live.runtime().ref(address)))
+          .as("the runtime's table no longer holds it")
+          .isInstanceOf(ObjectStoppedException.class);
+      assertThat(catchThrowable(() -> object.send(s -> {})))
+          .isInstanceOf(ObjectStoppedException.class);
+    }
+  }
 }
