@@ -229,6 +229,7 @@ final class BroadPhase {
    */
   void fileForRays() {
     grid.rebuild(boxes, atoms.size());
+    grid.fileRows();
   }
 
   /**

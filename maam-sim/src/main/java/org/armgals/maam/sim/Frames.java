@@ -16,6 +16,11 @@ final class Frames {
 
   /** {@code a · b}: rotate by {@code b}, then by {@code a}. */
   static DQuaternion multiply(DQuaternionC a, DQuaternionC b) {
+    return multiply(a, b, new DQuaternion());
+  }
+
+  /** {@code a · b} written to {@code out} (which may be {@code a} or {@code b}), and returned. */
+  static DQuaternion multiply(DQuaternionC a, DQuaternionC b, DQuaternion out) {
     double aw = a.get0();
     double ax = a.get1();
     double ay = a.get2();
@@ -24,7 +29,7 @@ final class Frames {
     double bx = b.get1();
     double by = b.get2();
     double bz = b.get3();
-    return new DQuaternion(
+    return out.set(
         aw * bw - ax * bx - ay * by - az * bz,
         aw * bx + ax * bw + ay * bz - az * by,
         aw * by - ax * bz + ay * bw + az * bx,
@@ -33,6 +38,11 @@ final class Frames {
 
   /** The vector {@code (x, y, z)} rotated by {@code q}. */
   static DVector3 rotate(DQuaternionC q, double x, double y, double z) {
+    return rotate(q, x, y, z, new DVector3());
+  }
+
+  /** The vector {@code (x, y, z)} rotated by {@code q}, written to {@code out} and returned. */
+  static DVector3 rotate(DQuaternionC q, double x, double y, double z, DVector3 out) {
     double w = q.get0();
     double qx = q.get1();
     double qy = q.get2();
@@ -41,7 +51,7 @@ final class Frames {
     double tx = 2 * (qy * z - qz * y);
     double ty = 2 * (qz * x - qx * z);
     double tz = 2 * (qx * y - qy * x);
-    return new DVector3(
+    return out.set(
         x + w * tx + (qy * tz - qz * ty),
         y + w * ty + (qz * tx - qx * tz),
         z + w * tz + (qx * ty - qy * tx));
@@ -90,8 +100,13 @@ final class Frames {
 
   /** The rotation by {@code angle} rad about the unit axis {@code a}. */
   static DQuaternion about(double[] a, double angle) {
+    return about(a, angle, new DQuaternion());
+  }
+
+  /** The rotation by {@code angle} rad about the unit axis {@code a}, written to {@code out}. */
+  static DQuaternion about(double[] a, double angle, DQuaternion out) {
     double s = Math.sin(angle / 2);
-    return new DQuaternion(Math.cos(angle / 2), a[0] * s, a[1] * s, a[2] * s);
+    return out.set(Math.cos(angle / 2), a[0] * s, a[1] * s, a[2] * s);
   }
 
   /** The inverse of the unit quaternion {@code q}. */

@@ -38,9 +38,13 @@ final class LegPose {
   private final double radius;
   private final double length;
 
-  private DQuaternion local = new DQuaternion(1, 0, 0, 0);
-  private DVector3 direction = new DVector3(0, 0, 0);
-  private DVector3 turnedAxis2 = new DVector3();
+  // Worked out in place: a moving leg is posed every step, and a pose that allocated would fill
+  // the caches with garbage that pushes the atoms' own state out (decision 0079).
+  private final DQuaternion local = new DQuaternion(1, 0, 0, 0);
+  private final DVector3 direction = new DVector3(0, 0, 0);
+  private final DVector3 turnedAxis2 = new DVector3();
+  private final DQuaternion turn1 = new DQuaternion();
+  private final DQuaternion turn2 = new DQuaternion();
   private final DVector3 tip = new DVector3();
   private final DVector3 centre = new DVector3();
 
@@ -55,10 +59,10 @@ final class LegPose {
 
   /** Works out the pose at angles {@code (a1, a2)}. */
   void pose(double a1, double a2) {
-    DQuaternion turn1 = Frames.about(axis1, -a1);
-    local = Frames.multiply(Frames.multiply(turn1, Frames.about(axis2, -a2)), rest);
-    direction = Frames.rotate(local, 0, 0, 1);
-    turnedAxis2 = Frames.rotate(turn1, axis2[0], axis2[1], axis2[2]);
+    Frames.about(axis1, -a1, turn1);
+    Frames.multiply(Frames.multiply(turn1, Frames.about(axis2, -a2, turn2), local), rest, local);
+    Frames.rotate(local, 0, 0, 1, direction);
+    Frames.rotate(turn1, axis2[0], axis2[1], axis2[2], turnedAxis2);
     double half = length / 2;
     centre.set(
         restDirection[0] * radius + direction.get0() * half,
@@ -72,10 +76,10 @@ final class LegPose {
 
   /** Works out axis 2 as axis 1's turn by angle {@code a1} turns it, and nothing else. */
   void turnAxis2(double a1) {
-    turnedAxis2 = Frames.rotate(Frames.about(axis1, -a1), axis2[0], axis2[1], axis2[2]);
+    Frames.rotate(Frames.about(axis1, -a1, turn1), axis2[0], axis2[1], axis2[2], turnedAxis2);
   }
 
-  /** The leg's rotation (its local z is the leg's direction). */
+  /** The leg's rotation (its local z is the leg's direction), until the next pose. */
   DQuaternion local() {
     return local;
   }

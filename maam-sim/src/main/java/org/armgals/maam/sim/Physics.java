@@ -359,6 +359,11 @@ final class Physics {
     broadPhase.searchEveryStep();
   }
 
+  /** Whether the rays asked the grid by rows of cells at the last sensing: for tests. */
+  boolean raysQueriedByRows() {
+    return broadPhase.grid().queriedByRows();
+  }
+
   void destroy() {
     contacts.destroy();
     broadPhase.destroy();

@@ -42,7 +42,7 @@ final class RayCaster {
 
   private final double[] partBox = new double[6];
 
-  /** The other atoms whose boxes overlap {@link #reachBox}, in the grid's order. */
+  /** The other atoms whose boxes overlap {@link #reachBox}, in the order the grid gave them. */
   private int[] reachedAtoms = new int[8];
 
   private int reached;

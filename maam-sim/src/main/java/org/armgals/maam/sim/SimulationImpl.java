@@ -329,6 +329,11 @@ final class SimulationImpl implements Simulation {
     physics.searchEveryStep();
   }
 
+  /** Whether the rays asked the grid by rows of cells at this cycle's sensing: for tests. */
+  boolean raysQueriedByRows() {
+    return physics.raysQueriedByRows();
+  }
+
   private final IntConsumer drainPass = this::drain;
   private final IntConsumer drainServoPass = this::drainServo;
   private final IntConsumer drainLastPass = this::drainLast;

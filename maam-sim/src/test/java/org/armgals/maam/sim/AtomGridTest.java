@@ -83,6 +83,61 @@ class AtomGridTest {
     }
   }
 
+  /** The atoms whose boxes overlap {@code query}, by brute force, then by the grid's query. */
+  private static void assertQueryFindsTheOverlapping(
+      AtomGrid grid, double[] boxes, double[] query, String what) {
+    List<Integer> expected = new ArrayList<>();
+    for (int a = 0; a < boxes.length / 6; a++) {
+      if (Boxes.overlap(boxes, 6 * a, query, 0)) {
+        expected.add(a);
+      }
+    }
+    List<Integer> found = new ArrayList<>();
+    grid.forEachOverlapping(query, found::add);
+    assertThat(found).as(what).containsExactlyInAnyOrderElementsOf(expected);
+  }
+
+  @Test
+  void queriesByRowsOfCellsFindWhatTheHashFindsAsBoxesMove() {
+    // A thousand atoms on a square grid 0.4 m apart, as the benchmark lays them out, queried with
+    // boxes the size of an atom's reach: by rows of cells. Then some jump far away, which spreads
+    // the cells too thin for rows: through the hash of cells. Then back. (The other query test
+    // files no rows: the hash alone.)
+    SplittableRandom random = new SplittableRandom(17);
+    int count = 1000;
+    double[] boxes = new double[6 * count];
+    AtomGrid grid = new AtomGrid();
+    for (int round = 0; round < 30; round++) {
+      boolean far = round % 3 == 1;
+      for (int i = 0; i < count; i++) {
+        double x = (i % 32) * 0.4 + random.nextDouble(-0.05, 0.05);
+        double y = (i / 32) * 0.4 + random.nextDouble(-0.05, 0.05);
+        if (far && i % 100 == 0) {
+          x += random.nextDouble(-1e4, 1e4);
+          y += random.nextDouble(-1e4, 1e4);
+        }
+        double half = random.nextDouble(0.08, 0.11);
+        double[] box = {x - half, x + half, y - half, y + half, 0, 0.2};
+        System.arraycopy(box, 0, boxes, 6 * i, 6);
+      }
+      grid.rebuild(boxes, count);
+      grid.fileRows();
+      for (int q = 0; q < 50; q++) {
+        double x = random.nextDouble(-1, 14);
+        double y = random.nextDouble(-1, 14);
+        double h = random.nextDouble(0.01, 0.7);
+        double[] query = {x - h, x + h, y - h, y + h, random.nextDouble(-0.1, 0.1), 0.3};
+        assertQueryFindsTheOverlapping(grid, boxes, query, "round " + round + " query " + q);
+        assertThat(grid.queriedByRows()).as("round %d", round).isEqualTo(!far);
+      }
+      // A box that is not finite overlaps nothing, and is found by no query.
+      boxes[6 * 5] = Double.NaN;
+      grid.rebuild(boxes, count);
+      grid.fileRows();
+      assertQueryFindsTheOverlapping(grid, boxes, new double[] {-1, 14, -1, 14, -1, 1}, "NaN");
+    }
+  }
+
   @Test
   void givesThePairsInTheSameOrderEveryTime() {
     AtomGrid grid = new AtomGrid();

@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
 import org.armgals.maam.spi.Leg;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
@@ -62,6 +63,15 @@ class RaysOnLanesTest {
     List<AtomSensors> one = sensed(dynamics, atoms, 1, 6);
     // Records compare their doubles bit for bit (but NaN).
     assertThat(two).isEqualTo(one);
+  }
+
+  @Test
+  void theCrowdsRaysOnTwoLanesAskTheGridByRowsOfCells() {
+    // So the test above holds the rows (decision 0079) to one lane's readings, on two lanes.
+    try (Simulation s = Simulation.builder(layers(2 * Lanes.MIN_PER_LANE)).threads(2).build()) {
+      s.runCycle();
+      assertThat(((SimulationImpl) s).raysQueriedByRows()).isTrue();
+    }
   }
 
   @ParameterizedTest
