@@ -25,6 +25,13 @@ class CtrlCTest {
 
   @Test
   void aRunGivenSigintSaysSoKeepsItsTraceMarkedIncompleteAndExits130() throws Exception {
+    // A process started in the background by a shell without job control ignores SIGINT, and so
+    // does every process it starts: the JVM then installs no handler, and a run cannot be stopped.
+    assertThat(sigintIgnored())
+        .as(
+            "SIGINT is ignored by this test's JVM (inherited from the shell that started the build"
+                + " in the background); start the build from a shell with job control (set -m)")
+        .isFalse();
     Path out = dir.resolve("run");
     Process run =
         new ProcessBuilder(
@@ -78,6 +85,21 @@ class CtrlCTest {
   private static void interrupt(Process run) throws IOException, InterruptedException {
     Process kill = new ProcessBuilder("kill", "-INT", Long.toString(run.pid())).start();
     assertThat(kill.waitFor()).isZero();
+  }
+
+  /** Whether this process ignores SIGINT, from its mask of ignored signals in /proc (Linux). */
+  private static boolean sigintIgnored() throws IOException {
+    Path status = Path.of("/proc/self/status");
+    if (!Files.isReadable(status)) {
+      return false;
+    }
+    for (String line : Files.readAllLines(status, StandardCharsets.US_ASCII)) {
+      if (line.startsWith("SigIgn:")) {
+        long ignored = Long.parseUnsignedLong(line.substring("SigIgn:".length()).trim(), 16);
+        return (ignored & (1L << (2 - 1))) != 0; // bit n - 1 stands for signal n; SIGINT is 2
+      }
+    }
+    return false;
   }
 
   private record ByteArrayOutputStreamResult(int status, String out) {}
