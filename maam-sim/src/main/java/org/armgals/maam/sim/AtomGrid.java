@@ -39,11 +39,11 @@ final class AtomGrid {
    * the atoms lie in ({@link #rowsX0}, {@link #rowsY0}, {@link #rowsWidth} cells wide), the atoms
    * of cell k (row-major) at {@code rowAtoms[rowStart[k] .. rowStart[k + 1])}, so that a query
    * reads each row of cells it spans as one run (decision 0079). Filed by {@link #fileRows} after a
-   * {@link #rebuild}, and only if the rectangle has few cells for the atoms ({@link #rowsDense}).
+   * {@link #rebuild}, and only if the rectangle has few cells for the atoms; {@link #byRows} says
+   * whether they are filed so now.
    */
-  private boolean rowsFiled;
+  private boolean byRows;
 
-  private boolean rowsDense;
   private int rowsX0;
   private int rowsY0;
   private int rowsWidth;
@@ -78,7 +78,7 @@ final class AtomGrid {
       next[i] = heads[h];
       heads[h] = i;
     }
-    rowsFiled = false;
+    byRows = false;
   }
 
   /**
@@ -88,8 +88,7 @@ final class AtomGrid {
    * before the queries, never during them: lanes query at once, and a query only reads.
    */
   void fileRows() {
-    rowsFiled = true;
-    rowsDense = false;
+    byRows = false;
     if (count == 0) {
       return;
     }
@@ -134,7 +133,7 @@ final class AtomGrid {
       rowStart[k] = rowStart[k - 1];
     }
     rowStart[0] = 0;
-    rowsDense = true;
+    byRows = true;
   }
 
   /**
@@ -142,7 +141,7 @@ final class AtomGrid {
    * for tests.
    */
   boolean queriedByRows() {
-    return rowsFiled && rowsDense;
+    return byRows;
   }
 
   private int rowCell(int i) {
@@ -232,7 +231,7 @@ final class AtomGrid {
       }
       return;
     }
-    if (rowsFiled && rowsDense) {
+    if (byRows) {
       forEachInRows(query, x0, x1, y0, y1, visitor);
       return;
     }
