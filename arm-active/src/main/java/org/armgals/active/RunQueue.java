@@ -12,8 +12,14 @@ import org.jspecify.annotations.Nullable;
  * multi-producer queue; its stub is pushed back when the queue runs dry, so a node leaves the queue
  * entirely when polled and can be queued again at once). The few workers take turns as the single
  * consumer through a try-lock; a worker that finds the lock taken polls again later.
+ *
+ * <p>The producers' end, {@link #last}, lies a cache line away from the consumer's ({@link
+ * RunQueueConsumerSide}): a sender queueing objects on one core and a worker polling them on the
+ * other then each write their own line, and the worker reads the producers' only when its own end
+ * says the queue may be empty. Sharing one line, the two ends moved it between the cores twice per
+ * object (decision 0081).
  */
-final class RunQueue {
+final class RunQueue extends RunQueuePadding {
   private static final VarHandle LAST;
   private static final VarHandle NEXT;
   private static final VarHandle POLLING;
@@ -22,7 +28,7 @@ final class RunQueue {
     try {
       MethodHandles.Lookup l = MethodHandles.lookup();
       LAST = l.findVarHandle(RunQueue.class, "last", Node.class);
-      POLLING = l.findVarHandle(RunQueue.class, "polling", boolean.class);
+      POLLING = l.findVarHandle(RunQueueConsumerSide.class, "polling", boolean.class);
       NEXT = l.findVarHandle(Node.class, "runNext", Node.class);
     } catch (ReflectiveOperationException e) {
       throw new ExceptionInInitializerError(e);
@@ -35,19 +41,12 @@ final class RunQueue {
     private volatile @Nullable Node runNext;
   }
 
-  private static final class Stub extends Node {}
-
-  private final Stub stub = new Stub();
+  /** The node the queue holds when it holds no object. */
+  static final class Stub extends Node {}
 
   /** The producers' end. */
   @SuppressWarnings("unused") // accessed through LAST
   private volatile Node last = stub;
-
-  /** The consumer's end; written only by the worker holding {@link #polling}. */
-  private volatile Node first = stub;
-
-  @SuppressWarnings("unused") // accessed through POLLING
-  private volatile boolean polling;
 
   void offer(Node n) {
     NEXT.setRelease(n, (Node) null);
@@ -61,12 +60,12 @@ final class RunQueue {
    * stub, which that (running) worker takes on its next poll.
    */
   boolean isEmpty() {
-    return last == stub && first == stub;
+    return first == stub && last == stub; // the consumer's own line first
   }
 
   /** The oldest queued object, or null if there is none (or another worker is polling). */
   @Nullable Core<?> poll() {
-    if (last == stub && first == stub) {
+    if (isEmpty()) {
       return null;
     }
     if (!POLLING.compareAndSet(this, false, true)) {
