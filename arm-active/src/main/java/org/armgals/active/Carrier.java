@@ -1,6 +1,7 @@
 package org.armgals.active;
 
-import java.util.concurrent.atomic.AtomicInteger;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
 import org.jspecify.annotations.Nullable;
 
 /**
@@ -20,8 +21,21 @@ import org.jspecify.annotations.Nullable;
 class Carrier {
   private static final ThreadLocal<@Nullable Carrier> CURRENT = new ThreadLocal<>();
 
-  /** Activations run by hand on platform threads right now, in the whole JVM. */
-  private static final AtomicInteger PLATFORM_ACTIVATIONS = new AtomicInteger();
+  /**
+   * Ints before and after the element {@link #PLATFORM_ACTIVATIONS} counts in: a line each side.
+   */
+  private static final int PAD = 16;
+
+  /**
+   * Activations run by hand on platform threads right now, in the whole JVM: the element {@link
+   * #PAD}, which the others keep alone on its cache line (decision 0082). Every send from a
+   * platform thread reads it. As an {@code AtomicInteger} it was made with the first worker, just
+   * before it, and shared a line with that worker's fields, written on every activation: each send
+   * from a program's main thread then waited for that line to come from the worker's core.
+   */
+  private static final int[] PLATFORM_ACTIVATIONS = new int[2 * PAD + 1];
+
+  private static final VarHandle COUNT = MethodHandles.arrayElementVarHandle(int[].class);
 
   /** The object whose activation this thread is running, or null. */
   @Nullable Core<?> running;
@@ -41,7 +55,8 @@ class Carrier {
 
   /** The calling thread's carrier, or null if it is running no activation. */
   static @Nullable Carrier current() {
-    if (!Thread.currentThread().isVirtual() && PLATFORM_ACTIVATIONS.get() == 0) {
+    if (!Thread.currentThread().isVirtual()
+        && (int) COUNT.getVolatile(PLATFORM_ACTIVATIONS, PAD) == 0) {
       return null;
     }
     return CURRENT.get();
@@ -70,13 +85,13 @@ class Carrier {
     }
     boolean platform = !Thread.currentThread().isVirtual();
     if (platform) {
-      PLATFORM_ACTIVATIONS.incrementAndGet();
+      COUNT.getAndAdd(PLATFORM_ACTIVATIONS, PAD, 1);
     }
     try {
       core.run(c);
     } finally {
       if (platform) {
-        PLATFORM_ACTIVATIONS.decrementAndGet();
+        COUNT.getAndAdd(PLATFORM_ACTIVATIONS, PAD, -1);
       }
     }
   }
