@@ -67,6 +67,19 @@ final class AtomModel {
   double pushZ;
 
   /**
+   * The legs' proximity rays side by side, leg l's at {@code RAY * l}: where it was last aimed from
+   * (the tip) and along (the leg's direction), then its box (at {@code RAY_BOX}, see {@link
+   * Boxes}). Casting reads them here, not from the legs and the engine's rays (decision 0080).
+   */
+  final double[] rays = new double[RAY * Leg.values().length];
+
+  static final int RAY = 12;
+  static final int RAY_BOX = 6;
+
+  /** A bit per leg, by ordinal: its ray is aimed, to be cast in this cycle's sensing pass. */
+  int aimed;
+
+  /**
    * The atom placed at {@code placement}, at {@code index} in the simulation's list; {@code cone}
    * is {@code params}' (one for every atom that shares them).
    */

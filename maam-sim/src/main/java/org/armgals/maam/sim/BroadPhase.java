@@ -3,7 +3,6 @@ package org.armgals.maam.sim;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import java.util.function.IntConsumer;
 import org.ode4j.ode.DGeom;
 
 /**
@@ -233,24 +232,10 @@ final class BroadPhase {
   }
 
   /**
-   * One lane, every atom {@link #file filed}: casts each atom's aimed rays in turn, handing its
-   * index to {@code cast} as soon as its own rays are cast: casting a ray writes only its own leg's
-   * proximity, so what the atom senses is then known, and can be read while the atom is at hand.
-   */
-  void castRays(List<AtomModel> atoms, IntConsumer cast) {
-    fileForRays();
-    RayCaster caster = casters[0];
-    for (int i = 0; i < atoms.size(); i++) {
-      caster.cast(atoms.get(i));
-      cast.accept(i);
-    }
-  }
-
-  /**
    * Casts {@code atom}'s aimed rays with lane {@code lane}'s caster, every atom {@link #file filed}
-   * and {@link Parts#readyForRays readied} and the grid {@link #fileForRays rebuilt}: lanes cast at
-   * once, each with its own caster, and read what no lane writes until the pass is over (see {@link
-   * RayCaster}).
+   * and the grid {@link #fileForRays rebuilt}. On several lanes every atom is also {@link
+   * Parts#readyForRays readied}: lanes cast at once, each with its own caster, and read what no
+   * lane writes until the pass is over (see {@link RayCaster}); one lane may leave the parts lazy.
    */
   void castRays(int lane, AtomModel atom) {
     casters[lane].cast(atom);

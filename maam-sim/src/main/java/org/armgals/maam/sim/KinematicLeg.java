@@ -96,6 +96,12 @@ final class KinematicLeg extends LegModel {
     pose.coneBox(atom.params.coneHalfAngle(), atom.params.legRadius(), to);
   }
 
+  /** Its parts hear of every move of the leg and of the kernel's body. */
+  @Override
+  boolean keepsItsRay() {
+    return true;
+  }
+
   @Override
   double angle1() {
     return a1;

@@ -53,11 +53,11 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
 
   double proximity;
 
-  /** The ray is aimed, to be cast in this cycle's sensing pass. */
-  boolean aimed;
-
-  /** Where the ray was last aimed from (the tip) and along (the leg's direction). */
-  final double[] aim = new double[6];
+  /**
+   * Whether the ray is where {@link #aimRay} would put it now: aimed since the leg last moved on
+   * its carrier and the carrier last moved (see {@link Parts#moved} and {@link Parts#bodyMoved}).
+   */
+  boolean rayInPlace;
 
   LegModel(AtomModel atom, Leg leg, DCapsule capsule, DRay ray) {
     this.atom = atom;
@@ -148,18 +148,38 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
   /** Puts the capsule where the leg is, for a collision. */
   void place() {}
 
-  /** Places the proximity ray at the tip, pointing along the leg. */
+  /**
+   * Places the proximity ray at the tip, pointing along the leg, and writes where it is aimed from
+   * and along, and its box, into its atom's {@link AtomModel#rays}. A ray already {@link
+   * #rayInPlace in place} is left as it is: aiming it again would set the very same numbers, and
+   * its box would come out the same (decision 0080).
+   */
   final void aimRay() {
+    double range = atom.params.proximityRange();
+    proximity = range;
+    if (rayInPlace) {
+      return;
+    }
     DVector3 d = direction();
     DVector3 tip = tip();
-    aim[0] = tip.get0();
-    aim[1] = tip.get1();
-    aim[2] = tip.get2();
-    aim[3] = d.get0();
-    aim[4] = d.get1();
-    aim[5] = d.get2();
+    double[] rays = atom.rays;
+    int at = AtomModel.RAY * leg.ordinal();
+    rays[at] = tip.get0();
+    rays[at + 1] = tip.get1();
+    rays[at + 2] = tip.get2();
+    rays[at + 3] = d.get0();
+    rays[at + 4] = d.get1();
+    rays[at + 5] = d.get2();
     ray.set(tip, d);
-    ray.setLength(atom.params.proximityRange());
-    proximity = atom.params.proximityRange();
+    ray.setLength(range);
+    // Its box worked out now, while the ray is at hand, not when it is cast.
+    Boxes.copy(ray.getAABB(), rays, at + AtomModel.RAY_BOX);
+    rayInPlace = keepsItsRay();
   }
+
+  /**
+   * Whether the ray, once aimed, stays in place until its atom's {@link Parts} hear that the leg or
+   * the carrier moved.
+   */
+  abstract boolean keepsItsRay();
 }
