@@ -103,14 +103,11 @@ final class BroadPhase {
       // where the collisions would place them, off the calling thread.
       atom.parts.readyForGround(ground, boxes, 6 * i);
     }
-    for (LegModel leg : atom.legs) {
-      if (atom.still || rests && !leg.movesOnItsCarrier()) {
-        // Neither the part nor what it touched moved.
-        leg.contact |= leg.touchingGround;
-      } else {
-        leg.touchingGround = false;
-      }
-    }
+    // The legs whose tips keep touching the ground where they do: neither the part nor what it
+    // touched moved.
+    int keep = atom.still ? -1 : rests ? ~atom.turning : 0;
+    atom.contacts |= atom.touchingGrounds & keep;
+    atom.touchingGrounds &= keep;
   }
 
   /**
@@ -143,9 +140,7 @@ final class BroadPhase {
       }
       if (quiet[i]) {
         // Another body touched it, and may wake it: its contacts with the ground count after all.
-        for (LegModel leg : atom.legs) {
-          leg.touchingGround = false;
-        }
+        atom.touchingGrounds = 0;
       }
       for (int g = 0; g < ground.geoms.size(); g++) {
         if (ground.overlaps(g, boxes, 6 * i)) {
@@ -268,13 +263,16 @@ final class BroadPhase {
     if (atom.kernel.isEnabled()) {
       return false;
     }
-    for (LegModel leg : atom.legs) {
-      if (leg.binding != null) {
+    LegModel[] legs = atom.legs;
+    for (int l = 0; l < legs.length; l++) {
+      int bit = 1 << l;
+      if ((atom.bound & bit) != 0) {
         return false;
       }
-      if (leg.movesOnItsCarrier()
-          && atom.parts.legMayTouch(leg, ground)
-          && ground.touches(placed(leg).getAABB())) {
+      // The legs that turn are those that move on their carrier.
+      if ((atom.turning & bit) != 0
+          && atom.parts.legMayTouch(legs[l], ground)
+          && ground.touches(placed(legs[l]).getAABB())) {
         return false;
       }
     }

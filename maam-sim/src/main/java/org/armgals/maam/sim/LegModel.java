@@ -18,6 +18,10 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
 
   final AtomModel atom;
   final Leg leg;
+
+  /** The leg's bit in its atom's masks of legs: {@code 1 << ordinal}. */
+  final int bit;
+
   final DCapsule capsule;
   final DRay ray;
 
@@ -30,26 +34,21 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
   double target1;
 
   double target2;
+
+  /**
+   * Whether the motors are on (until {@link #relax}); written through {@link #setTarget} and {@link
+   * #relax}, which wake the servo.
+   */
   boolean powered = true;
+
+  /** Written through {@link #setTorqueLimit}, which wakes the servo. */
   double torqueLimit;
+
+  /** Written through {@link #fail}, which wakes the servo. */
   boolean failed;
+
   boolean locked;
   @Nullable Binding binding;
-
-  /** The tip touched something during the current control period. */
-  boolean contact;
-
-  /**
-   * The tip touched another atom in the last step whose collisions with other atoms were computed
-   * for its atom.
-   */
-  boolean touchingAtom;
-
-  /**
-   * The tip touched the ground or an obstacle in the last step whose collisions with them were
-   * computed for its atom.
-   */
-  boolean touchingGround;
 
   double proximity;
 
@@ -62,6 +61,7 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
   LegModel(AtomModel atom, Leg leg, DCapsule capsule, DRay ray) {
     this.atom = atom;
     this.leg = leg;
+    this.bit = 1 << leg.ordinal();
     this.capsule = capsule;
     this.ray = ray;
     this.torqueLimit = atom.params.maxTorque();
@@ -73,6 +73,38 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
     target1 = fitted[0];
     target2 = fitted[1];
     powered = true;
+    wake();
+  }
+
+  /** Switches the motors off: the leg hangs limp until the next target. */
+  final void relax() {
+    powered = false;
+    wake();
+  }
+
+  /** Limits the motors to {@code torque} (N·m). */
+  final void setTorqueLimit(double torque) {
+    torqueLimit = torque;
+    wake();
+  }
+
+  /** The leg fails: it senses and moves no more. */
+  final void fail() {
+    failed = true;
+    wake();
+  }
+
+  /**
+   * Something the servo reads changed: it is no longer {@link AtomModel#resting at rest}, and works
+   * out its next step.
+   */
+  final void wake() {
+    atom.resting &= ~bit;
+  }
+
+  /** Whether the tip touched something during the current control period. */
+  final boolean contact() {
+    return (atom.contacts & bit) != 0;
   }
 
   /** The joint's angles of the last {@link #angles} asked for, and what they convert to. */

@@ -329,16 +329,17 @@ final class Physics {
       return;
     }
     boolean world = other.kind() == GeomTag.Kind.WORLD;
-    if (world ? leg.touchingGround : leg.touchingAtom) {
+    AtomModel atom = leg.atom;
+    if (((world ? atom.touchingGrounds : atom.touchingAtoms) & leg.bit) != 0) {
       return;
     }
     DVector3 tip = leg.tip();
     if (tip.distance(at) <= 1.5 * legRadius) {
-      leg.contact = true;
+      atom.contacts |= leg.bit;
       if (world) {
-        leg.touchingGround = true;
+        atom.touchingGrounds |= leg.bit;
       } else {
-        leg.touchingAtom = true;
+        atom.touchingAtoms |= leg.bit;
       }
     }
   }

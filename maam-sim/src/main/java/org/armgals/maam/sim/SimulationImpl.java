@@ -319,6 +319,13 @@ final class SimulationImpl implements Simulation {
     fusePasses = false;
   }
 
+  /** Every leg's servo worked out at every step, none skipped as resting: for tests. */
+  void neverRest() {
+    for (AtomModel atom : atoms) {
+      atom.mayRest = false;
+    }
+  }
+
   /** The contacts made so far between two atoms: for tests. */
   long atomContacts() {
     return physics.atomContacts;
@@ -348,8 +355,13 @@ final class SimulationImpl implements Simulation {
       atom.kernel.addForce(atom.pushX, atom.pushY, atom.pushZ);
     }
     boolean on = atom.motorsOn();
-    for (LegModel leg : atom.legs) {
-      leg.servo(on, dt);
+    LegModel[] legs = atom.legs;
+    int awake = ~atom.resting;
+    for (int l = 0; l < legs.length; l++) {
+      // A resting leg's servo would write what is there (see AtomModel.resting).
+      if ((awake & 1 << l) != 0) {
+        legs[l].servo(on, dt);
+      }
     }
     if (!following) {
       physics.prepare(atom);
@@ -457,9 +469,9 @@ final class SimulationImpl implements Simulation {
     atom.inbox.clear();
     BodyView view = views[i];
     view.sensors = sense(atom, view.joints);
+    atom.contacts = 0;
     boolean locked = false;
     for (LegModel leg : atom.legs) {
-      leg.contact = false;
       locked |= TipMatcher.lockedAndFree(leg);
     }
     mayBind[i] = locked && !atom.failed;
@@ -501,7 +513,7 @@ final class SimulationImpl implements Simulation {
                 leg.angles(a1, a2),
                 leg.torque1,
                 leg.torque2,
-                leg.contact,
+                leg.contact(),
                 leg.locked,
                 b == null ? OptionalInt.empty() : OptionalInt.of(b.other(leg).atom.id),
                 b == null ? Optional.empty() : Optional.of(b.other(leg).leg),
@@ -588,7 +600,7 @@ final class SimulationImpl implements Simulation {
   public void failAtom(int id) {
     AtomModel atom = view(id).model;
     if (!atom.failed) {
-      atom.failed = true;
+      atom.fail();
       atom.inbox.clear();
       events.add(new SimEvent.AtomFailed(timeNanos, id));
     }
@@ -598,7 +610,7 @@ final class SimulationImpl implements Simulation {
   public void failLeg(int id, Leg leg) {
     LegModel model = view(id).model.leg(leg);
     if (!model.failed) {
-      model.failed = true;
+      model.fail();
       events.add(new SimEvent.LegFailed(timeNanos, id, leg));
     }
   }
