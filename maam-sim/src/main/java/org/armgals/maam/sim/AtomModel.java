@@ -67,6 +67,56 @@ final class AtomModel {
   double pushZ;
 
   /**
+   * The legs' proximity rays side by side, leg l's at {@code RAY * l}: where it was last aimed from
+   * (the tip) and along (the leg's direction), then its box (at {@code RAY_BOX}, see {@link
+   * Boxes}). Casting reads them here, not from the legs and the engine's rays (decision 0080).
+   */
+  final double[] rays = new double[RAY * Leg.values().length];
+
+  static final int RAY = 12;
+  static final int RAY_BOX = 6;
+
+  /** A bit per leg, by ordinal: its ray is aimed, to be cast in this cycle's sensing pass. */
+  int aimed;
+
+  // The legs' state that every step reads, a bit per leg by ordinal, here rather than in the legs:
+  // with a thousand atoms, each step reads them from memory afresh, and a leg that rests is then
+  // not read at all (decision 0080).
+
+  /** The tip touched something during the current control period. */
+  int contacts;
+
+  /**
+   * The tip touched another atom in the last step whose collisions with other atoms were computed
+   * for this atom.
+   */
+  int touchingAtoms;
+
+  /**
+   * The tip touched the ground or an obstacle in the last step whose collisions with them were
+   * computed for this atom.
+   */
+  int touchingGrounds;
+
+  /** The leg turned on its carrier in the last step (see {@link LegModel#movesOnItsCarrier}). */
+  int turning;
+
+  /** The leg is bound. */
+  int bound;
+
+  /**
+   * The leg's servo is at rest: its last step left every number as it was, and so will the next
+   * while nothing it reads changes (its target, power, torque limit, failure or load, the atom's
+   * motors or the kernel's rest), and its load is nought; so its servo, the reading of its load and
+   * its power (nought) are skipped until it is {@link LegModel#wake woken}. Only kinematic legs
+   * rest.
+   */
+  int resting;
+
+  /** Whether legs may rest (see {@link #resting}); off only in the test that holds both ways. */
+  boolean mayRest = true;
+
+  /**
    * The atom placed at {@code placement}, at {@code index} in the simulation's list; {@code cone}
    * is {@code params}' (one for every atom that shares them).
    */
@@ -184,16 +234,11 @@ final class AtomModel {
    * obstacles as {@link Physics} decides).
    */
   void beforeCollisions() {
-    still = !kernel.isEnabled();
-    for (LegModel leg : legs) {
-      still &= !leg.movesOnItsCarrier();
-    }
-    for (LegModel leg : legs) {
-      if (still) {
-        leg.contact |= leg.touchingAtom | leg.touchingGround;
-      } else {
-        leg.touchingAtom = false;
-      }
+    still = !kernel.isEnabled() && turning == 0;
+    if (still) {
+      contacts |= touchingAtoms | touchingGrounds;
+    } else {
+      touchingAtoms = 0;
     }
   }
 
@@ -235,19 +280,38 @@ final class AtomModel {
    * mechanical power over their efficiency. Returns true the step it runs empty.
    */
   boolean drain(double dt) {
-    for (LegModel leg : legs) {
-      leg.afterStep(dt);
+    if (kernel.isEnabled()) {
+      // The engine stepped the kernel, and its contacts load every leg afresh.
+      resting = 0;
+    }
+    int awake = ~resting;
+    for (int l = 0; l < legs.length; l++) {
+      if ((awake & 1 << l) != 0) {
+        legs[l].afterStep(dt);
+      }
     }
     if (failed || energy <= 0) {
       return false;
     }
     double power = params.idleDraw();
-    for (LegModel leg : legs) {
-      if (!leg.failed) {
-        power += leg.motorPower() / params.motorEfficiency();
+    for (int l = 0; l < legs.length; l++) {
+      // A resting leg's power is nought, and adding it would leave the sum as it is.
+      if ((awake & 1 << l) != 0 && !legs[l].failed) {
+        power += legs[l].motorPower() / params.motorEfficiency();
       }
     }
     energy = Math.max(0, energy - power * dt);
-    return energy == 0;
+    if (energy == 0) {
+      // The motors stop.
+      resting = 0;
+      return true;
+    }
+    return false;
+  }
+
+  /** The atom fails: it senses, moves and drains no more. */
+  void fail() {
+    failed = true;
+    resting = 0;
   }
 }

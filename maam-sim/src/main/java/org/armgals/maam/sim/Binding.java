@@ -38,6 +38,8 @@ final class Binding {
     joint.setFeedback(feedback);
     a.binding = this;
     b.binding = this;
+    a.atom.bound |= a.bit;
+    b.atom.bound |= b.bit;
     if (a instanceof KinematicLeg ka && b instanceof KinematicLeg kb) {
       // tipA⁻¹ ∘ tipB, each tip frame the kernel's pose composed with the leg's local pose.
       DQuaternionC qa = Frames.multiply(ka.carrier().getQuaternion(), ka.localRotation());
@@ -156,5 +158,7 @@ final class Binding {
     joint.destroy();
     a.binding = null;
     b.binding = null;
+    a.atom.bound &= ~a.bit;
+    b.atom.bound &= ~b.bit;
   }
 }

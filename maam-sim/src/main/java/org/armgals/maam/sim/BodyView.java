@@ -44,7 +44,7 @@ final class BodyView {
       throw new IllegalArgumentException(
           "torque limit " + torque + " N·m: expected a finite number >= 0");
     }
-    model.leg(leg).torqueLimit = Math.min(torque, model.params.maxTorque());
+    model.leg(leg).setTorqueLimit(Math.min(torque, model.params.maxTorque()));
   }
 
   int id() {
@@ -71,7 +71,7 @@ final class BodyView {
 
   /** Switches {@code leg}'s motors off: it hangs limp until the next target. */
   void relax(Leg leg) {
-    model.leg(requireNonNull(leg, "leg")).powered = false;
+    model.leg(requireNonNull(leg, "leg")).relax();
   }
 
   /** Locks {@code leg}'s connector: it binds to the first locked tip within tolerance. */

@@ -31,25 +31,25 @@ final class Boxes {
   }
 
   /**
-   * Whether the segment from {@code aim[0..2]} along the unit direction {@code aim[3..5]}, {@code
-   * length} long, surely misses the box in {@code box} at {@code at} (the box taken a nanometre
-   * larger, for rounding).
+   * Whether the segment from {@code aim[from..from + 2]} along the unit direction {@code aim[from +
+   * 3..from + 5]}, {@code length} long, surely misses the box in {@code box} at {@code at} (the box
+   * taken a nanometre larger, for rounding).
    */
-  static boolean segmentMisses(double[] box, int at, double[] aim, double length) {
+  static boolean segmentMisses(double[] box, int at, double[] aim, int from, double length) {
     double enter = 0;
     double leave = length;
     for (int axis = 0; axis < 3; axis++) {
-      double from = aim[axis];
-      double along = aim[3 + axis];
+      double start = aim[from + axis];
+      double along = aim[from + 3 + axis];
       double lo = box[at + 2 * axis] - 1e-9;
       double hi = box[at + 2 * axis + 1] + 1e-9;
       if (along == 0) {
-        if (from < lo || from > hi) {
+        if (start < lo || start > hi) {
           return true;
         }
       } else {
-        double a = (lo - from) / along;
-        double b = (hi - from) / along;
+        double a = (lo - start) / along;
+        double b = (hi - start) / along;
         enter = Math.max(enter, Math.min(a, b));
         leave = Math.min(leave, Math.max(a, b));
         if (enter > leave) {

@@ -3,7 +3,6 @@ package org.armgals.maam.sim;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import java.util.function.IntConsumer;
 import org.ode4j.ode.DGeom;
 
 /**
@@ -104,14 +103,11 @@ final class BroadPhase {
       // where the collisions would place them, off the calling thread.
       atom.parts.readyForGround(ground, boxes, 6 * i);
     }
-    for (LegModel leg : atom.legs) {
-      if (atom.still || rests && !leg.movesOnItsCarrier()) {
-        // Neither the part nor what it touched moved.
-        leg.contact |= leg.touchingGround;
-      } else {
-        leg.touchingGround = false;
-      }
-    }
+    // The legs whose tips keep touching the ground where they do: neither the part nor what it
+    // touched moved.
+    int keep = atom.still ? -1 : rests ? ~atom.turning : 0;
+    atom.contacts |= atom.touchingGrounds & keep;
+    atom.touchingGrounds &= keep;
   }
 
   /**
@@ -144,9 +140,7 @@ final class BroadPhase {
       }
       if (quiet[i]) {
         // Another body touched it, and may wake it: its contacts with the ground count after all.
-        for (LegModel leg : atom.legs) {
-          leg.touchingGround = false;
-        }
+        atom.touchingGrounds = 0;
       }
       for (int g = 0; g < ground.geoms.size(); g++) {
         if (ground.overlaps(g, boxes, 6 * i)) {
@@ -233,24 +227,10 @@ final class BroadPhase {
   }
 
   /**
-   * One lane, every atom {@link #file filed}: casts each atom's aimed rays in turn, handing its
-   * index to {@code cast} as soon as its own rays are cast: casting a ray writes only its own leg's
-   * proximity, so what the atom senses is then known, and can be read while the atom is at hand.
-   */
-  void castRays(List<AtomModel> atoms, IntConsumer cast) {
-    fileForRays();
-    RayCaster caster = casters[0];
-    for (int i = 0; i < atoms.size(); i++) {
-      caster.cast(atoms.get(i));
-      cast.accept(i);
-    }
-  }
-
-  /**
    * Casts {@code atom}'s aimed rays with lane {@code lane}'s caster, every atom {@link #file filed}
-   * and {@link Parts#readyForRays readied} and the grid {@link #fileForRays rebuilt}: lanes cast at
-   * once, each with its own caster, and read what no lane writes until the pass is over (see {@link
-   * RayCaster}).
+   * and the grid {@link #fileForRays rebuilt}. On several lanes every atom is also {@link
+   * Parts#readyForRays readied}: lanes cast at once, each with its own caster, and read what no
+   * lane writes until the pass is over (see {@link RayCaster}); one lane may leave the parts lazy.
    */
   void castRays(int lane, AtomModel atom) {
     casters[lane].cast(atom);
@@ -283,13 +263,16 @@ final class BroadPhase {
     if (atom.kernel.isEnabled()) {
       return false;
     }
-    for (LegModel leg : atom.legs) {
-      if (leg.binding != null) {
+    LegModel[] legs = atom.legs;
+    for (int l = 0; l < legs.length; l++) {
+      int bit = 1 << l;
+      if ((atom.bound & bit) != 0) {
         return false;
       }
-      if (leg.movesOnItsCarrier()
-          && atom.parts.legMayTouch(leg, ground)
-          && ground.touches(placed(leg).getAABB())) {
+      // The legs that turn are those that move on their carrier.
+      if ((atom.turning & bit) != 0
+          && atom.parts.legMayTouch(legs[l], ground)
+          && ground.touches(placed(legs[l]).getAABB())) {
         return false;
       }
     }

@@ -32,6 +32,12 @@ final class JointedLeg extends LegModel {
     joint.setFeedback(feedback);
   }
 
+  /** Its body moves on its own, and no part tells when: the ray is aimed afresh every time. */
+  @Override
+  boolean keepsItsRay() {
+    return false;
+  }
+
   @Override
   double angle1() {
     return joint.getAngle1();

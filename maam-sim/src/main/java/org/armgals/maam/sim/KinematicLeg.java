@@ -96,6 +96,12 @@ final class KinematicLeg extends LegModel {
     pose.coneBox(atom.params.coneHalfAngle(), atom.params.legRadius(), to);
   }
 
+  /** Its parts hear of every move of the leg and of the kernel's body. */
+  @Override
+  boolean keepsItsRay() {
+    return true;
+  }
+
   @Override
   double angle1() {
     return a1;
@@ -138,6 +144,24 @@ final class KinematicLeg extends LegModel {
     double limit = on ? torqueLimit : 0;
     torque1 = clamp(inertia * accel1 - load1, limit);
     torque2 = clamp(inertia * accel2 - load2, limit);
+    if (r1 != 0 || r2 != 0) {
+      atom.turning |= bit;
+    } else {
+      atom.turning &= ~bit;
+    }
+    // Still, and still before: the next step would write the very same numbers, and does nothing
+    // else, while what it reads stays as it is (see AtomModel.resting).
+    if (atom.mayRest
+        && w1 == 0
+        && w2 == 0
+        && accel1 == 0
+        && accel2 == 0
+        && !Double.isNaN(torque1)
+        && !Double.isNaN(torque2)) {
+      atom.resting |= bit;
+    } else {
+      atom.resting &= ~bit;
+    }
     if (accel1 != 0 || accel2 != 0) {
       // The kernel takes the reaction of the torque that accelerates the leg (the legs' mass is
       // the body's, so nothing else would turn it back).
@@ -217,6 +241,7 @@ final class KinematicLeg extends LegModel {
 
   @Override
   void addLoad(double tx, double ty, double tz) {
+    wake();
     loadX += tx;
     loadY += ty;
     loadZ += tz;

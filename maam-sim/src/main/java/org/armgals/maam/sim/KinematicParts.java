@@ -186,11 +186,15 @@ final class KinematicParts implements Parts {
   @Override
   public void moved(LegModel leg) {
     order.moved(leg.leg.ordinal() + 1);
+    leg.rayInPlace = false;
   }
 
   @Override
   public void bodyMoved() {
     reachesKnown = false;
+    for (KinematicLeg leg : legs) {
+      leg.rayInPlace = false;
+    }
     // The body marks its geometries from the last put on it, a leg's, to the first, the kernel.
     for (int p = geoms.length - 1; p >= 0; p--) {
       order.moved(p);

@@ -18,6 +18,10 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
 
   final AtomModel atom;
   final Leg leg;
+
+  /** The leg's bit in its atom's masks of legs: {@code 1 << ordinal}. */
+  final int bit;
+
   final DCapsule capsule;
   final DRay ray;
 
@@ -30,38 +34,34 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
   double target1;
 
   double target2;
+
+  /**
+   * Whether the motors are on (until {@link #relax}); written through {@link #setTarget} and {@link
+   * #relax}, which wake the servo.
+   */
   boolean powered = true;
+
+  /** Written through {@link #setTorqueLimit}, which wakes the servo. */
   double torqueLimit;
+
+  /** Written through {@link #fail}, which wakes the servo. */
   boolean failed;
+
   boolean locked;
   @Nullable Binding binding;
 
-  /** The tip touched something during the current control period. */
-  boolean contact;
-
-  /**
-   * The tip touched another atom in the last step whose collisions with other atoms were computed
-   * for its atom.
-   */
-  boolean touchingAtom;
-
-  /**
-   * The tip touched the ground or an obstacle in the last step whose collisions with them were
-   * computed for its atom.
-   */
-  boolean touchingGround;
-
   double proximity;
 
-  /** The ray is aimed, to be cast in this cycle's sensing pass. */
-  boolean aimed;
-
-  /** Where the ray was last aimed from (the tip) and along (the leg's direction). */
-  final double[] aim = new double[6];
+  /**
+   * Whether the ray is where {@link #aimRay} would put it now: aimed since the leg last moved on
+   * its carrier and the carrier last moved (see {@link Parts#moved} and {@link Parts#bodyMoved}).
+   */
+  boolean rayInPlace;
 
   LegModel(AtomModel atom, Leg leg, DCapsule capsule, DRay ray) {
     this.atom = atom;
     this.leg = leg;
+    this.bit = 1 << leg.ordinal();
     this.capsule = capsule;
     this.ray = ray;
     this.torqueLimit = atom.params.maxTorque();
@@ -73,6 +73,38 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
     target1 = fitted[0];
     target2 = fitted[1];
     powered = true;
+    wake();
+  }
+
+  /** Switches the motors off: the leg hangs limp until the next target. */
+  final void relax() {
+    powered = false;
+    wake();
+  }
+
+  /** Limits the motors to {@code torque} (N·m). */
+  final void setTorqueLimit(double torque) {
+    torqueLimit = torque;
+    wake();
+  }
+
+  /** The leg fails: it senses and moves no more. */
+  final void fail() {
+    failed = true;
+    wake();
+  }
+
+  /**
+   * Something the servo reads changed: it is no longer {@link AtomModel#resting at rest}, and works
+   * out its next step.
+   */
+  final void wake() {
+    atom.resting &= ~bit;
+  }
+
+  /** Whether the tip touched something during the current control period. */
+  final boolean contact() {
+    return (atom.contacts & bit) != 0;
   }
 
   /** The joint's angles of the last {@link #angles} asked for, and what they convert to. */
@@ -148,18 +180,38 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
   /** Puts the capsule where the leg is, for a collision. */
   void place() {}
 
-  /** Places the proximity ray at the tip, pointing along the leg. */
+  /**
+   * Places the proximity ray at the tip, pointing along the leg, and writes where it is aimed from
+   * and along, and its box, into its atom's {@link AtomModel#rays}. A ray already {@link
+   * #rayInPlace in place} is left as it is: aiming it again would set the very same numbers, and
+   * its box would come out the same (decision 0080).
+   */
   final void aimRay() {
+    double range = atom.params.proximityRange();
+    proximity = range;
+    if (rayInPlace) {
+      return;
+    }
     DVector3 d = direction();
     DVector3 tip = tip();
-    aim[0] = tip.get0();
-    aim[1] = tip.get1();
-    aim[2] = tip.get2();
-    aim[3] = d.get0();
-    aim[4] = d.get1();
-    aim[5] = d.get2();
+    double[] rays = atom.rays;
+    int at = AtomModel.RAY * leg.ordinal();
+    rays[at] = tip.get0();
+    rays[at + 1] = tip.get1();
+    rays[at + 2] = tip.get2();
+    rays[at + 3] = d.get0();
+    rays[at + 4] = d.get1();
+    rays[at + 5] = d.get2();
     ray.set(tip, d);
-    ray.setLength(atom.params.proximityRange());
-    proximity = atom.params.proximityRange();
+    ray.setLength(range);
+    // Its box worked out now, while the ray is at hand, not when it is cast.
+    Boxes.copy(ray.getAABB(), rays, at + AtomModel.RAY_BOX);
+    rayInPlace = keepsItsRay();
   }
+
+  /**
+   * Whether the ray, once aimed, stays in place until its atom's {@link Parts} hear that the leg or
+   * the carrier moved.
+   */
+  abstract boolean keepsItsRay();
 }

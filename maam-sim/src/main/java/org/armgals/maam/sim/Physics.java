@@ -3,7 +3,6 @@ package org.armgals.maam.sim;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.locks.ReentrantLock;
-import java.util.function.IntConsumer;
 import org.jspecify.annotations.Nullable;
 import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
@@ -103,16 +102,6 @@ final class Physics {
   /** Adds an atom; atoms are added in id order. */
   void add(AtomModel atom) {
     broadPhase.add(atom);
-  }
-
-  /**
-   * Casts the {@link LegModel#aimed aimed} proximity rays of {@code atoms}' legs against everything
-   * but their own atoms, on one thread that has {@link #file filed} every atom, handing each atom's
-   * index to {@code cast} once its rays are cast: see {@link BroadPhase#castRays(List,
-   * IntConsumer)}. Casting uses no global of the engine's, so it takes no lock.
-   */
-  void castRays(List<AtomModel> atoms, IntConsumer cast) {
-    broadPhase.castRays(atoms, cast);
   }
 
   /**
@@ -340,16 +329,17 @@ final class Physics {
       return;
     }
     boolean world = other.kind() == GeomTag.Kind.WORLD;
-    if (world ? leg.touchingGround : leg.touchingAtom) {
+    AtomModel atom = leg.atom;
+    if (((world ? atom.touchingGrounds : atom.touchingAtoms) & leg.bit) != 0) {
       return;
     }
     DVector3 tip = leg.tip();
     if (tip.distance(at) <= 1.5 * legRadius) {
-      leg.contact = true;
+      atom.contacts |= leg.bit;
       if (world) {
-        leg.touchingGround = true;
+        atom.touchingGrounds |= leg.bit;
       } else {
-        leg.touchingAtom = true;
+        atom.touchingAtoms |= leg.bit;
       }
     }
   }

@@ -1,7 +1,6 @@
 package org.armgals.maam.sim;
 
 import java.util.Arrays;
-import org.armgals.maam.spi.Leg;
 import org.jspecify.annotations.Nullable;
 import org.ode4j.ode.DContactGeomBuffer;
 import org.ode4j.ode.DGeom;
@@ -29,13 +28,8 @@ final class RayCaster {
   /** The atom whose rays are being cast. */
   private @Nullable AtomModel casting;
 
-  /** Its rays' boxes, leg l's at 6l, and a box around them all. */
-  private final double[] rayBoxes = new double[6 * Leg.values().length];
-
+  /** A box around all the aimed rays of the atom being cast. */
   private final double[] reachBox = new double[6];
-
-  /** The ray being cast's box. */
-  private final double[] rayBox = new double[6];
 
   /** A part's box that surely holds it, and its engine box. */
   private final double[] bound = new double[6];
@@ -60,44 +54,48 @@ final class RayCaster {
    * not matter).
    */
   void cast(AtomModel atom) {
+    int aimed = atom.aimed;
+    if (aimed == 0) {
+      return;
+    }
     LegModel[] legs = atom.legs;
+    double[] rays = atom.rays;
     boolean any = false;
     for (int l = 0; l < legs.length; l++) {
-      LegModel leg = legs[l];
-      if (!leg.aimed) {
+      if ((aimed & 1 << l) == 0) {
         continue;
       }
-      Boxes.copy(leg.ray.getAABB(), rayBoxes, 6 * l);
+      int box = AtomModel.RAY * l + AtomModel.RAY_BOX;
       if (!any) {
-        System.arraycopy(rayBoxes, 6 * l, reachBox, 0, 6);
+        System.arraycopy(rays, box, reachBox, 0, 6);
         any = true;
       } else {
         for (int axis = 0; axis < 3; axis++) {
-          reachBox[2 * axis] = Math.min(reachBox[2 * axis], rayBoxes[6 * l + 2 * axis]);
-          reachBox[2 * axis + 1] = Math.max(reachBox[2 * axis + 1], rayBoxes[6 * l + 2 * axis + 1]);
+          reachBox[2 * axis] = Math.min(reachBox[2 * axis], rays[box + 2 * axis]);
+          reachBox[2 * axis + 1] = Math.max(reachBox[2 * axis + 1], rays[box + 2 * axis + 1]);
         }
       }
-    }
-    if (!any) {
-      return;
     }
     reached = 0;
     casting = atom;
     broadPhase.grid().forEachOverlapping(reachBox, reach);
     casting = null;
     for (int l = 0; l < legs.length; l++) {
-      if (legs[l].aimed) {
-        castRay(legs[l], 6 * l);
+      if ((aimed & 1 << l) != 0) {
+        castRay(legs[l], rays, AtomModel.RAY * l);
       }
     }
   }
 
-  /** {@code leg}'s ray, its box at {@code at} in {@link #rayBoxes}. */
-  private void castRay(LegModel leg, int at) {
+  /**
+   * {@code leg}'s ray, where it is aimed from and along at {@code at} in {@code rays} and its box
+   * after them.
+   */
+  private void castRay(LegModel leg, double[] rays, int at) {
     DRay ray = leg.ray;
-    System.arraycopy(rayBoxes, at, rayBox, 0, 6);
+    int rayBox = at + AtomModel.RAY_BOX;
     for (int g = 0; g < ground.geoms.size(); g++) {
-      if (ground.overlaps(g, rayBox, 0)) {
+      if (ground.overlaps(g, rays, rayBox)) {
         hit(leg, ray, ground.geoms.get(g));
       }
     }
@@ -105,27 +103,28 @@ final class RayCaster {
     double[] boxes = broadPhase.boxes();
     for (int k = 0; k < reached; k++) {
       int a = reachedAtoms[k];
-      if (Boxes.overlap(boxes, 6 * a, rayBox, 0)
-          && !Boxes.segmentMisses(boxes, 6 * a, leg.aim, range)) {
-        castAtParts(leg, broadPhase.atom(a).parts, range);
+      if (Boxes.overlap(boxes, 6 * a, rays, rayBox)
+          && !Boxes.segmentMisses(boxes, 6 * a, rays, at, range)) {
+        castAtParts(leg, rays, at, broadPhase.atom(a).parts, range);
       }
     }
   }
 
   /**
-   * {@code leg}'s ray against each of {@code parts} whose box overlaps the ray's and that the
-   * segment may hit, in the parts' order.
+   * {@code leg}'s ray (at {@code at} in {@code rays}) against each of {@code parts} whose box
+   * overlaps the ray's and that the segment may hit, in the parts' order.
    */
-  private void castAtParts(LegModel leg, Parts parts, double range) {
+  private void castAtParts(LegModel leg, double[] rays, int at, Parts parts, double range) {
+    int rayBox = at + AtomModel.RAY_BOX;
     for (int i = 0; i < parts.count(); i++) {
       if (parts.bound(i, bound)
-          && (!Boxes.overlap(bound, 0, rayBox, 0)
-              || Boxes.segmentMisses(bound, 0, leg.aim, range))) {
+          && (!Boxes.overlap(bound, 0, rays, rayBox)
+              || Boxes.segmentMisses(bound, 0, rays, at, range))) {
         continue;
       }
       DGeom g = parts.part(i);
       Boxes.copy(g.getAABB(), partBox, 0);
-      if (Boxes.overlap(partBox, 0, rayBox, 0)) {
+      if (Boxes.overlap(partBox, 0, rays, rayBox)) {
         hit(leg, g, leg.ray);
       }
     }

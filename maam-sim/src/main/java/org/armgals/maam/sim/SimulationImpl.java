@@ -319,6 +319,13 @@ final class SimulationImpl implements Simulation {
     fusePasses = false;
   }
 
+  /** Every leg's servo worked out at every step, none skipped as resting: for tests. */
+  void neverRest() {
+    for (AtomModel atom : atoms) {
+      atom.mayRest = false;
+    }
+  }
+
   /** The contacts made so far between two atoms: for tests. */
   long atomContacts() {
     return physics.atomContacts;
@@ -337,7 +344,6 @@ final class SimulationImpl implements Simulation {
   private final IntConsumer drainPass = this::drain;
   private final IntConsumer drainServoPass = this::drainServo;
   private final IntConsumer drainLastPass = this::drainLast;
-  private final IntConsumer sensePass = this::sense;
   private final IntConsumer readyPass = this::ready;
   private final Lanes.LaneWork castSensePass = this::castAndSense;
 
@@ -349,8 +355,13 @@ final class SimulationImpl implements Simulation {
       atom.kernel.addForce(atom.pushX, atom.pushY, atom.pushZ);
     }
     boolean on = atom.motorsOn();
-    for (LegModel leg : atom.legs) {
-      leg.servo(on, dt);
+    LegModel[] legs = atom.legs;
+    int awake = ~atom.resting;
+    for (int l = 0; l < legs.length; l++) {
+      // A resting leg's servo would write what is there (see AtomModel.resting).
+      if ((awake & 1 << l) != 0) {
+        legs[l].servo(on, dt);
+      }
     }
     if (!following) {
       physics.prepare(atom);
@@ -384,8 +395,9 @@ final class SimulationImpl implements Simulation {
   }
 
   /**
-   * The sensing pass, over the atoms twice, not four times (decision 0073): each atom is aimed and
-   * filed for the rays at once, and read as soon as its own rays are cast. On one lane the parts a
+   * The sensing pass, over the atoms twice, not four times (decision 0073): each atom is filed for
+   * the rays, then, once every atom is filed, aimed, cast and read at once (decision 0080): aiming
+   * an atom writes its own rays alone, which only its own casting reads. On one lane the parts a
    * ray needs are placed as it needs them. On more, each lane casts its atoms' rays at once with
    * the others' (decision 0075): the first pass also readies each atom's parts, so that casting
    * reads what no lane writes, and the grid is filed on this thread between the passes. Each lane
@@ -394,10 +406,12 @@ final class SimulationImpl implements Simulation {
   private void senseAll() {
     if (lanes.lanes() == 1) {
       for (int i = 0; i < atoms.size(); i++) {
-        aim(i);
         physics.file(atoms.get(i));
       }
-      physics.castRays(atoms, sensePass);
+      physics.fileForRays();
+      for (int i = 0; i < atoms.size(); i++) {
+        castAndSense(0, i);
+      }
       return;
     }
     lanes.forEach(atoms.size(), readyPass);
@@ -406,22 +420,23 @@ final class SimulationImpl implements Simulation {
   }
 
   /**
-   * Atom {@code i} aimed, filed and readied for rays cast on several lanes: it writes atom {@code
-   * i}'s legs, parts and box alone.
+   * Atom {@code i} filed and readied for rays cast on several lanes: it writes atom {@code i}'s
+   * legs, parts and box alone.
    */
   private void ready(int i) {
-    aim(i);
     AtomModel atom = atoms.get(i);
     physics.file(atom);
     physics.readyForRays(atom);
   }
 
   /**
-   * Atom {@code i}'s rays cast on {@code lane}, then its sensors read: casting writes only its own
-   * legs' proximities, and reading writes only its own legs, view and inbox, none of which another
-   * lane's rays read (they read the engine's geometries and bodies, the boxes and the grid).
+   * Atom {@code i}'s rays aimed and cast on {@code lane}, then its sensors read: aiming and casting
+   * write only its own legs' rays and proximities, and reading writes only its own legs, view and
+   * inbox, none of which another lane's rays read (they read the engine's geometries and bodies,
+   * the boxes and the grid, and the legs' poses, which readying left worked out).
    */
   private void castAndSense(int lane, int i) {
+    aim(i);
     physics.castRays(lane, atoms.get(i));
     sense(i);
   }
@@ -429,8 +444,8 @@ final class SimulationImpl implements Simulation {
   /** Aims atom {@code i}'s proximity rays, but those of failed or bound legs. */
   private void aim(int i) {
     AtomModel atom = atoms.get(i);
+    int aimed = 0;
     for (LegModel leg : atom.legs) {
-      leg.aimed = false;
       if (atom.failed || leg.failed) {
         continue;
       }
@@ -438,9 +453,10 @@ final class SimulationImpl implements Simulation {
         leg.proximity = 0;
       } else {
         leg.aimRay();
-        leg.aimed = true;
+        aimed |= 1 << leg.leg.ordinal();
       }
     }
+    atom.aimed = aimed;
   }
 
   /**
@@ -453,9 +469,9 @@ final class SimulationImpl implements Simulation {
     atom.inbox.clear();
     BodyView view = views[i];
     view.sensors = sense(atom, view.joints);
+    atom.contacts = 0;
     boolean locked = false;
     for (LegModel leg : atom.legs) {
-      leg.contact = false;
       locked |= TipMatcher.lockedAndFree(leg);
     }
     mayBind[i] = locked && !atom.failed;
@@ -497,7 +513,7 @@ final class SimulationImpl implements Simulation {
                 leg.angles(a1, a2),
                 leg.torque1,
                 leg.torque2,
-                leg.contact,
+                leg.contact(),
                 leg.locked,
                 b == null ? OptionalInt.empty() : OptionalInt.of(b.other(leg).atom.id),
                 b == null ? Optional.empty() : Optional.of(b.other(leg).leg),
@@ -584,7 +600,7 @@ final class SimulationImpl implements Simulation {
   public void failAtom(int id) {
     AtomModel atom = view(id).model;
     if (!atom.failed) {
-      atom.failed = true;
+      atom.fail();
       atom.inbox.clear();
       events.add(new SimEvent.AtomFailed(timeNanos, id));
     }
@@ -594,7 +610,7 @@ final class SimulationImpl implements Simulation {
   public void failLeg(int id, Leg leg) {
     LegModel model = view(id).model.leg(leg);
     if (!model.failed) {
-      model.failed = true;
+      model.fail();
       events.add(new SimEvent.LegFailed(timeNanos, id, leg));
     }
   }

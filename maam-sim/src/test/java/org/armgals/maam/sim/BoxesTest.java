@@ -41,7 +41,7 @@ class BoxesTest {
         double t = length * k / 2000;
         pointInside = inside(box, aim[0] + t * aim[3], aim[1] + t * aim[4], aim[2] + t * aim[5]);
       }
-      boolean missed = Boxes.segmentMisses(box, 0, aim, length);
+      boolean missed = Boxes.segmentMisses(box, 0, aim, 0, length);
       if (pointInside) {
         assertThat(missed).as("trial %d", trial).isFalse();
         hits++;
