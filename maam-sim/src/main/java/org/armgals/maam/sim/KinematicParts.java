@@ -78,7 +78,7 @@ final class KinematicParts implements Parts {
   @Override
   public boolean legMayTouch(LegModel leg, Ground ground) {
     double[] reaches = reaches();
-    int bit = 1 << leg.leg.ordinal();
+    int bit = leg.bit;
     if ((groundKnown & bit) == 0) {
       // Asked each step of a resting atom with a turning leg: the answer holds while the kernel
       // does not move (the ground is its simulation's one, which does not move either).

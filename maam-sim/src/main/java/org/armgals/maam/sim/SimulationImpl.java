@@ -453,7 +453,7 @@ final class SimulationImpl implements Simulation {
         leg.proximity = 0;
       } else {
         leg.aimRay();
-        aimed |= 1 << leg.leg.ordinal();
+        aimed |= leg.bit;
       }
     }
     atom.aimed = aimed;
