@@ -47,6 +47,7 @@ final class Core<S> extends SenderSide implements ActiveObject<S> {
   private static final VarHandle SIZE;
   private static final VarHandle STATE;
   private static final VarHandle RARE;
+  private static final VarHandle STOPPED_COPY;
 
   static {
     try {
@@ -55,6 +56,7 @@ final class Core<S> extends SenderSide implements ActiveObject<S> {
       SIZE = l.findVarHandle(SenderSide.class, "size", int.class);
       STATE = l.findVarHandle(SenderSide.class, "state", int.class);
       RARE = l.findVarHandle(ReceiverSide.class, "rare", Rare.class);
+      STOPPED_COPY = l.findVarHandle(ReceiverSide.class, "stopped", boolean.class);
     } catch (ReflectiveOperationException e) {
       throw new ExceptionInInitializerError(e);
     }
@@ -290,7 +292,9 @@ final class Core<S> extends SenderSide implements ActiveObject<S> {
         break;
       }
     }
-    stopped = true;
+    // A release store, without a volatile store's fence: the activation only needs to see the
+    // copy soon, and the senders go by the STOPPED bit that the compare-and-set above has set.
+    STOPPED_COPY.setRelease(this, true);
     runtime.unregister(this);
     if (config.clock() instanceof ClockSupport.Owner owner) {
       owner.support().unregister(this);

@@ -66,8 +66,9 @@ final class Dispatcher {
 
   /**
    * One worker thread; {@code running} is true while it polls or runs an activation. {@code next}
-   * holds the object this worker woke last: it runs it next, on the same core, unless a spinning
-   * worker steals it first (Go's {@code runnext}).
+   * holds an object this worker woke while the slot was empty: it runs it next, on the same core,
+   * unless a spinning worker steals it first (Go's {@code runnext}). Only this worker sets it;
+   * others only take it (a compare-and-set to null).
    */
   private static final class Worker extends Carrier {
     final Dispatcher dispatcher;
@@ -162,9 +163,9 @@ final class Dispatcher {
   }
 
   /**
-   * Queues an object that holds its SCHEDULED flag. Any thread. From a worker, the object goes to
-   * that worker's {@code next} slot (the one it displaces goes to the shared queue): an object
-   * woken by another runs on the same core, with its data still in cache.
+   * Queues an object that holds its SCHEDULED flag. Any thread. From a worker whose {@code next}
+   * slot is empty, the object goes there: an object woken by another runs on the same core, with
+   * its data still in cache. Otherwise it goes to the shared queue.
    */
   void schedule(Core<?> core) {
     if (terminated) {
@@ -172,25 +173,26 @@ final class Dispatcher {
           core); // only stopped objects get here: the activation discards their events
       return;
     }
-    if (Carrier.current() instanceof Worker w && w.dispatcher == this) {
-      Core<?> displaced = (Core<?>) NEXT.getAndSet(w, core);
-      if (displaced == null) {
-        // No wake-up: this worker runs it next. Waking another one here only made it spin on
-        // this slot (measured: thread ring and ping-pong 40-65% faster without). A spinning
-        // worker still steals it, and a worker about to block hands it over. But at most once
-        // per HANDOFF_WAKE_NANOS of hand-overs a parked worker is woken: it spins and steals the
-        // slot if this worker's thread has lost its core meanwhile (a loaded machine), so that a
-        // chain of hand-overs does not wait for one descheduled thread while another could run.
-        if ((++w.handoffs & HANDOFF_CHECK_MASK) == 0) {
-          long now = runtime.timeSource().nanoTime();
-          if (now - w.handoffWakeAt >= HANDOFF_WAKE_NANOS) {
-            w.handoffWakeAt = now;
-            wakeIfNoneSpinning();
-          }
+    if (Carrier.current() instanceof Worker w && w.dispatcher == this && w.next == null) {
+      // Only this worker fills its slot, and a thief only empties it (a compare-and-set from the
+      // object to null), so an empty slot stays empty until this store: no atomic exchange. An
+      // occupied slot keeps its object, and this one joins the shared queue, where the other
+      // workers find it (decision 0083).
+      NEXT.setRelease(w, core);
+      // No wake-up: this worker runs it next. Waking another one here only made it spin on this
+      // slot (measured: thread ring and ping-pong 40-65% faster without). A spinning worker still
+      // steals it, and a worker about to block hands it over. But at most once per
+      // HANDOFF_WAKE_NANOS of hand-overs a parked worker is woken: it spins and steals the slot if
+      // this worker's thread has lost its core meanwhile (a loaded machine), so that a chain of
+      // hand-overs does not wait for one descheduled thread while another could run.
+      if ((++w.handoffs & HANDOFF_CHECK_MASK) == 0) {
+        long now = runtime.timeSource().nanoTime();
+        if (now - w.handoffWakeAt >= HANDOFF_WAKE_NANOS) {
+          w.handoffWakeAt = now;
+          wakeIfNoneSpinning();
         }
-        return;
       }
-      core = displaced;
+      return;
     }
     requeue(core);
   }

@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicIntegerArray;
 import javax.management.ObjectName;
 import org.armgals.active.spi.Transport;
 import org.junit.jupiter.api.Test;
@@ -198,6 +199,50 @@ class RuntimeTest {
             .isInstanceOf(ObjectStoppedException.class);
       }
     }
+  }
+
+  @Test
+  void objectsWokenByABusyActivationRunWhileItGoesOnButTheOneItsWorkerKeeps() throws Exception {
+    // A worker keeps one object it woke for itself, to run next on the same core (another worker
+    // may steal it); the others go to the shared queue, where the second worker takes them while
+    // the activation still holds the first one, spinning.
+    try (ActiveRuntime rt = ActiveRuntime.builder().workers(2).jmx(false).build()) {
+      List<ActiveObject<Cell>> woken = new ArrayList<>();
+      for (int i = 0; i < 4; i++) {
+        woken.add(rt.spawn(new Cell()));
+      }
+      ActiveObject<Cell> busy = rt.spawn(new Cell());
+      AtomicIntegerArray ran = new AtomicIntegerArray(woken.size());
+      FutureValue<Integer> ranMeanwhile =
+          busy.call(
+              c -> {
+                for (int i = 0; i < woken.size(); i++) {
+                  int n = i;
+                  woken.get(i).send(x -> ran.set(n, 1));
+                }
+                long deadline = System.nanoTime() + Duration.ofSeconds(10).toNanos();
+                while (count(ran) < woken.size() - 1 && System.nanoTime() < deadline) {
+                  Thread.onSpinWait(); // holds the worker: no park, no yield to the runtime
+                }
+                return count(ran);
+              });
+      assertThat(ranMeanwhile.getValue(Duration.ofSeconds(20)))
+          .as("objects run while the activation that woke them went on; ran: %s", ran)
+          .isGreaterThanOrEqualTo(woken.size() - 1);
+      // And the one kept for later runs once the activation is over.
+      for (ActiveObject<Cell> w : woken) {
+        w.call(x -> 0).getValue(Duration.ofSeconds(10));
+      }
+      assertThat(count(ran)).as("ran: %s", ran).isEqualTo(woken.size());
+    }
+  }
+
+  private static int count(AtomicIntegerArray flags) {
+    int n = 0;
+    for (int i = 0; i < flags.length(); i++) {
+      n += flags.get(i);
+    }
+    return n;
   }
 
   @Test
