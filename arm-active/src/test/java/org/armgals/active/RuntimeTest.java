@@ -205,7 +205,7 @@ class RuntimeTest {
   void objectsWokenByABusyActivationRunWhileItGoesOnButTheOneItsWorkerKeeps() throws Exception {
     // A worker keeps one object it woke for itself, to run next on the same core (another worker
     // may steal it); the others go to the shared queue, where the second worker takes them while
-    // the activation still holds the first one, spinning.
+    // the activation, spinning, still holds the first worker.
     try (ActiveRuntime rt = ActiveRuntime.builder().workers(2).jmx(false).build()) {
       List<ActiveObject<Cell>> woken = new ArrayList<>();
       for (int i = 0; i < 4; i++) {
