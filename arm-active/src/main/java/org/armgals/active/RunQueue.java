@@ -105,6 +105,11 @@ final class RunQueue extends RunQueuePadding {
     return null;
   }
 
+  /** The node after {@code n} in the queue, or null: for tests. */
+  static @Nullable Node successorOf(Node n) {
+    return (Node) NEXT.getAcquire(n);
+  }
+
   /**
    * A node leaving the queue forgets its successor (no producer links to it any more: it is not the
    * last node). Otherwise an idle object would keep every object polled after it reachable, a chain
