@@ -2,16 +2,18 @@ package org.armgals.active;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.time.Duration;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashSet;
+import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Random;
 import java.util.Set;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicReferenceArray;
 import org.junit.jupiter.api.Test;
 
@@ -110,12 +112,11 @@ class RunQueueTest {
     for (int i = 0; i < o.size(); i++) {
       queued.set(i, false);
     }
-    java.util.Map<Core<?>, Integer> index = new java.util.IdentityHashMap<>();
+    Map<Core<?>, Integer> index = new IdentityHashMap<>();
     for (int i = 0; i < o.size(); i++) {
       index.put(o.get(i), i);
     }
     ConcurrentLinkedQueue<String> problems = new ConcurrentLinkedQueue<>();
-    AtomicBoolean done = new AtomicBoolean();
     CountDownLatch finished = new CountDownLatch(producers);
     List<Thread> threads = new ArrayList<>();
     for (int p = 0; p < producers; p++) {
@@ -138,13 +139,14 @@ class RunQueueTest {
     Set<Integer> seen = new HashSet<>();
     // A queue that hands out a node twice may link it into a cycle and never run dry: give up then.
     long deadline = TimeSource.system().nanoTime() + TimeUnit.SECONDS.toNanos(30);
-    while (!done.get()) {
+    boolean done = false;
+    while (!done) {
       if (TimeSource.system().nanoTime() - deadline > 0) {
         problems.add("still taking objects after 30 s, " + taken + " taken");
         break;
       }
       if (finished.getCount() == 0 && q.isEmpty()) {
-        done.set(true);
+        done = true; // one more poll, which finds nothing
       }
       Core<?> c = q.poll();
       if (c == null) {
@@ -160,7 +162,7 @@ class RunQueueTest {
     }
     assertThat(problems).isEmpty();
     for (Thread t : threads) {
-      assertThat(t.join(java.time.Duration.ofSeconds(30))).isTrue();
+      assertThat(t.join(Duration.ofSeconds(30))).isTrue();
     }
     assertThat(q.poll()).isNull();
     for (int i = 0; i < o.size(); i++) {
