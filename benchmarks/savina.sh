@@ -15,7 +15,10 @@
 # >= 21 (JAVA_HOME if it is one, else the newest under /usr/lib/jvm) with the same JVM options
 # for all: SAVINA_JAVA_OPTS, default "-Xms4g -Xmx4g". Sizes are overridden with
 # -Dsavina.<key>=<n> in SAVINA_JAVA_OPTS (see Sizes.java). Prints one line per run (see
-# docs/benchmarks.md); exits non-zero if a run fails its check.
+# docs/benchmarks.md); exits non-zero if a run fails its check. Before each workload, unless
+# --cpus names one CPU, it prints what moving a cache line between two cores costs at that moment
+# (LineRoundTrip, "line median_round_trip_ns=<ns> rounds=3"): on a shared virtual machine that
+# cost changes from hour to hour, and with it every workload that hands messages between cores.
 set -euo pipefail
 
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -82,7 +85,15 @@ fi
 echo "# $("$java" -version 2>&1 | head -1); options: ${opts[*]}; $(nproc) cores${cpus:+, on CPUs $cpus}" >&2
 # Workload outside, implementation inside: on a shared, noisy machine the implementations of
 # one workload then run minutes apart at most, under much the same load.
+probe=1
+if [[ "$cpus" =~ ^[0-9]+$ ]]; then
+  probe=0 # one CPU: a round trip would wait for the scheduler, not for a line
+fi
 for name in "${names[@]}"; do
+  if ((probe)); then
+    "${pin[@]}" "$java" -cp "$jar" org.armgals.bench.savina.LineRoundTrip --rounds 3 \
+      --trips 200000 | grep '^line median'
+  fi
   for impl in "${impls[@]}"; do
     "${pin[@]}" "$java" "${opts[@]}" -cp "$jar" org.armgals.bench.savina.Savina \
       --impl "$impl" --warmup "$warmup" --warmup-seconds "$warmup_seconds" --runs "$runs" "$name"
