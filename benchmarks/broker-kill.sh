@@ -19,7 +19,7 @@ runs=1
 while (($#)); do
   case "$1" in
     --runs) runs="${2:?--runs needs a count}"; shift 2 ;;
-    -h | --help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;;
     *) echo "broker-kill.sh: unknown argument '$1' (try --help)" >&2; exit 2 ;;
   esac
 done

@@ -37,7 +37,7 @@ while (($#)); do
       args+=("$1" "${2:?$1 needs a count}")
       shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;;
     -*) echo "broker.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) args+=("$1"); shift ;;
   esac

@@ -47,7 +47,7 @@ while (($#)); do
     --seconds | --missed-seconds | --warmup-seconds | --rounds | --cycles)
       args+=("$1" "${2:?$1 needs a value}"); shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,33p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;;
     notify-cost | latency | missed) names+=("$1"); shift ;;
     *) echo "reflect.sh: unknown option or name '$1' (try --help)" >&2; exit 2 ;;
   esac

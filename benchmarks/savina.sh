@@ -55,7 +55,7 @@ while (($#)); do
       fi
       shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;;
     -*) echo "savina.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) names+=("$1"); shift ;;
   esac

@@ -26,7 +26,7 @@ suite=""
 while (($#)); do
   case "$1" in
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;;
     -*) echo "scxml-conformance.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) suite="$1"; shift ;;
   esac

@@ -34,7 +34,7 @@ while (($#)); do
     --threads) args+=(--threads "${2:?--threads needs a number}"); shift 2 ;;
     --seconds) args+=(--seconds "${2:?--seconds needs a number}"); shift 2 ;;
     --no-build) build=0; shift ;;
-    -h | --help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;;
     -*) echo "sim.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) sizes+=("$1"); shift ;;
   esac
