@@ -14,7 +14,7 @@ import java.util.Set;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicReferenceArray;
+import java.util.concurrent.atomic.AtomicIntegerArray;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -107,11 +107,9 @@ class RunQueueTest {
     int rounds = 2_000;
     List<Core<?>> o = objects(producers * perProducer);
     RunQueue q = new RunQueue();
-    // Each object goes in again only once it has come out, as under its SCHEDULED flag.
-    AtomicReferenceArray<Boolean> queued = new AtomicReferenceArray<>(o.size());
-    for (int i = 0; i < o.size(); i++) {
-      queued.set(i, false);
-    }
+    // 1 while an object is queued: it goes in again only once it has come out, as under its
+    // SCHEDULED flag.
+    AtomicIntegerArray queued = new AtomicIntegerArray(o.size());
     Map<Core<?>, Integer> index = new IdentityHashMap<>();
     for (int i = 0; i < o.size(); i++) {
       index.put(o.get(i), i);
@@ -127,7 +125,7 @@ class RunQueueTest {
                   () -> {
                     for (int r = 0; r < rounds; r++) {
                       for (int i = first; i < first + perProducer; i++) {
-                        if (queued.compareAndSet(i, false, true)) {
+                        if (queued.compareAndSet(i, 0, 1)) {
                           q.offer(o.get(i));
                         }
                       }
@@ -155,7 +153,7 @@ class RunQueueTest {
       }
       int i = index.get(c);
       seen.add(i);
-      if (!queued.compareAndSet(i, true, false)) {
+      if (!queued.compareAndSet(i, 1, 0)) {
         problems.add("object " + i + " came out while not queued");
       }
       taken++;
@@ -166,7 +164,7 @@ class RunQueueTest {
     }
     assertThat(q.poll()).isNull();
     for (int i = 0; i < o.size(); i++) {
-      assertThat(queued.get(i)).as("object %d left in the queue", i).isFalse();
+      assertThat(queued.get(i)).as("object %d left in the queue", i).isZero();
     }
     assertThat(seen).hasSize(o.size());
     assertThat(taken).isGreaterThanOrEqualTo(o.size());
