@@ -169,11 +169,14 @@ final class ChildProcess implements AutoCloseable {
 
   /**
    * Asks the process (and its descendants) to terminate, waits up to {@code grace}, then kills what
-   * is left. Returns the exit code, or null if it had to be killed.
+   * is left. Returns the exit code, or null if it had to be killed. The lines the process prints
+   * while it stops still reach the log: the signals go through its {@link ProcessHandle}, because
+   * {@link Process#destroy} also closes our end of its output, after which a process that writes,
+   * or one that watches its output as {@code tail -f} does, dies of SIGPIPE.
    */
   @Nullable Integer stop(Duration grace) throws InterruptedException {
     process.descendants().forEach(ProcessHandle::destroy);
-    process.destroy();
+    process.toHandle().destroy();
     boolean exited = process.waitFor(grace.toNanos(), TimeUnit.NANOSECONDS);
     if (!exited) {
       killNow();
@@ -193,7 +196,7 @@ final class ChildProcess implements AutoCloseable {
 
   private void killNow() {
     process.descendants().forEach(ProcessHandle::destroyForcibly);
-    process.destroyForcibly();
+    process.toHandle().destroyForcibly();
   }
 
   private void forgetHook() {

@@ -88,6 +88,17 @@ class ChildProcessTest {
   }
 
   @Test
+  void stopKeepsWhatTheProcessPrintsWhileItStops() throws Exception {
+    ChildProcess child = bash("trap 'echo stopping; exit 7' TERM; echo ready; read -r line");
+    child.awaitLine("ready", line -> line.equals("ready"), LONG);
+
+    assertThat(child.stop(LONG)).isEqualTo(7);
+    assertThat(child.tail()).endsWith("ready\nstopping");
+    assertThat(java.nio.file.Files.readAllLines(dir.resolve("out.log")))
+        .containsExactly("ready", "stopping");
+  }
+
+  @Test
   void killEndsTheProcessAtOnce() throws Exception {
     ChildProcess child = bash("trap '' TERM; echo ready; exec tail -f /dev/null");
     child.awaitLine("ready", line -> line.equals("ready"), LONG);
