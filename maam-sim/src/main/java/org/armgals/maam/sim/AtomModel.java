@@ -69,12 +69,14 @@ final class AtomModel {
   /**
    * The legs' proximity rays side by side, leg l's at {@code RAY * l}: where it was last aimed from
    * (the tip) and along (the leg's direction), then its box (at {@code RAY_BOX}, see {@link
-   * Boxes}). Casting reads them here, not from the legs and the engine's rays (decision 0080).
+   * Boxes}), then its direction as the engine normalizes it (at {@code RAY_UNIT}). Casting reads
+   * them here, not from the legs and the engine's rays (decisions 0080 and 0084).
    */
   final double[] rays = new double[RAY * Leg.values().length];
 
-  static final int RAY = 12;
+  static final int RAY = 15;
   static final int RAY_BOX = 6;
+  static final int RAY_UNIT = 12;
 
   /** A bit per leg, by ordinal: its ray is aimed, to be cast in this cycle's sensing pass. */
   int aimed;

@@ -6,6 +6,7 @@ import org.ode4j.math.DMatrix3;
 import org.ode4j.ode.DAABBC;
 import org.ode4j.ode.DBox;
 import org.ode4j.ode.DGeom;
+import org.ode4j.ode.DPlane;
 import org.ode4j.ode.DRotation;
 import org.ode4j.ode.OdeHelper;
 
@@ -27,6 +28,18 @@ final class Ground {
   /** Their bounding boxes, geometry i's at 6i (see {@link Boxes}). */
   private final double[] boxes;
 
+  /** The plane's index in {@link #geoms}: the last. */
+  final int plane;
+
+  /**
+   * The plane's unit normal and its distance from the origin along it, as the engine keeps them.
+   */
+  private final double normal0;
+
+  private final double normal1;
+  private final double normal2;
+  private final double depth;
+
   Ground(List<Obstacle> obstacles) {
     for (Obstacle o : obstacles) {
       switch (o) {
@@ -34,9 +47,14 @@ final class Ground {
         case Obstacle.Pipe p -> pipe(p);
       }
     }
-    DGeom plane = OdeHelper.createPlane(null, 0, 0, 1, 0);
-    plane.setData(GeomTag.WORLD);
-    geoms.add(plane);
+    DPlane ground = OdeHelper.createPlane(null, 0, 0, 1, 0);
+    ground.setData(GeomTag.WORLD);
+    plane = geoms.size();
+    geoms.add(ground);
+    normal0 = ground.getNormal().get0();
+    normal1 = ground.getNormal().get1();
+    normal2 = ground.getNormal().get2();
+    depth = ground.getDepth();
     boxes = new double[6 * geoms.size()];
     for (int i = 0; i < geoms.size(); i++) {
       Boxes.copy(geoms.get(i).getAABB(), boxes, 6 * i);
@@ -82,6 +100,27 @@ final class Ground {
   /** Whether geometry {@code i}'s box overlaps the box in {@code box} at {@code at}. */
   boolean overlaps(int i, double[] box, int at) {
     return Boxes.overlap(boxes, 6 * i, box, at);
+  }
+
+  /**
+   * Where the ray at {@code at} in {@code rays} (laid out as in {@link AtomModel#rays}), {@code
+   * range} long, meets the plane: its distance along the ray, or {@link Double#POSITIVE_INFINITY}
+   * if it does not within its range. This is the engine's ray-plane collider
+   * (DxRay.CollideRayPlane), step for step, so the distance is the engine's to the bit; it reads no
+   * engine geometry.
+   */
+  double rayOnPlane(double[] rays, int at, double range) {
+    double alpha = depth - (normal0 * rays[at] + normal1 * rays[at + 1] + normal2 * rays[at + 2]);
+    int u = at + AtomModel.RAY_UNIT;
+    double k = normal0 * rays[u] + normal1 * rays[u + 1] + normal2 * rays[u + 2];
+    if (k == 0) {
+      return Double.POSITIVE_INFINITY;
+    }
+    alpha = alpha / k;
+    if (alpha < 0 || alpha > range) {
+      return Double.POSITIVE_INFINITY;
+    }
+    return alpha;
   }
 
   /** Copies geometry {@code i}'s box into {@code to} at {@code at}. */

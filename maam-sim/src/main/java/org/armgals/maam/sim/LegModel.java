@@ -149,10 +149,10 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
   /** The body a binding at this tip is fixed to. */
   abstract DBody carrier();
 
-  /** The leg's unit direction in the world. */
+  /** The leg's unit direction in the world, in a vector of its own the caller may change. */
   abstract DVector3 direction();
 
-  /** The tip's position: the end of the leg's far cap. */
+  /** The tip's position: the end of the leg's far cap, in a vector of its own. */
   abstract DVector3 tip();
 
   /**
@@ -181,17 +181,26 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
   void place() {}
 
   /**
-   * Places the proximity ray at the tip, pointing along the leg, and writes where it is aimed from
-   * and along, and its box, into its atom's {@link AtomModel#rays}. A ray already {@link
-   * #rayInPlace in place} is left as it is: aiming it again would set the very same numbers, and
-   * its box would come out the same (decision 0080).
+   * Aims the proximity ray from the tip along the leg, unless it is already {@link #rayInPlace in
+   * place}: aiming it again would write the very same numbers (decision 0080).
    */
   final void aimRay() {
-    double range = atom.params.proximityRange();
-    proximity = range;
-    if (rayInPlace) {
-      return;
+    proximity = atom.params.proximityRange();
+    if (!rayInPlace) {
+      placeRay();
     }
+  }
+
+  /**
+   * Writes where the ray is aimed from (the tip) and along (the leg), the box the engine would give
+   * it, and its direction as the engine normalizes it, into its atom's {@link AtomModel#rays}. The
+   * engine's ray is set from them only when it is cast at a geometry of the engine ({@link
+   * #engineRay}): on a large grid, touching each ray's engine geometry at every sensing costs a
+   * cache miss per ray, and most rays reach nothing or only the ground's plane, which {@link
+   * Ground#rayOnPlane} meets without the engine (decision 0084).
+   */
+  final void placeRay() {
+    double range = atom.params.proximityRange();
     DVector3 d = direction();
     DVector3 tip = tip();
     double[] rays = atom.rays;
@@ -202,11 +211,39 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
     rays[at + 3] = d.get0();
     rays[at + 4] = d.get1();
     rays[at + 5] = d.get2();
-    ray.set(tip, d);
-    ray.setLength(range);
-    // Its box worked out now, while the ray is at hand, not when it is cast.
-    Boxes.copy(ray.getAABB(), rays, at + AtomModel.RAY_BOX);
+    // As the engine sets a ray (DxRay.dGeomRaySet), with the direction this call's own vector.
+    DVector3 unit = d.normalize();
+    int box = at + AtomModel.RAY_BOX;
+    for (int axis = 0; axis < 3; axis++) {
+      double from = rays[at + axis];
+      double u = unit.get(axis);
+      rays[at + AtomModel.RAY_UNIT + axis] = u;
+      // The engine's box of a ray (DxRay.computeAABB): its start, and its start plus its length
+      // along it.
+      double to = u * range + from;
+      rays[box + 2 * axis] = from < to ? from : to;
+      rays[box + 2 * axis + 1] = from < to ? to : from;
+    }
+    engineRayBehind = true;
     rayInPlace = keepsItsRay();
+  }
+
+  /** Whether the engine's ray lags where the ray was last {@link #aimRay aimed}. */
+  private boolean engineRayBehind;
+
+  /**
+   * The engine's ray, set where the ray was last {@link #aimRay aimed} if it lags: for a collider.
+   * Only the thread that aims the leg's ray calls it.
+   */
+  final DRay engineRay() {
+    if (engineRayBehind) {
+      double[] rays = atom.rays;
+      int at = AtomModel.RAY * leg.ordinal();
+      ray.set(rays[at], rays[at + 1], rays[at + 2], rays[at + 3], rays[at + 4], rays[at + 5]);
+      ray.setLength(atom.params.proximityRange());
+      engineRayBehind = false;
+    }
+    return ray;
   }
 
   /**

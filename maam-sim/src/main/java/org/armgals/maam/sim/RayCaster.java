@@ -4,7 +4,6 @@ import java.util.Arrays;
 import org.jspecify.annotations.Nullable;
 import org.ode4j.ode.DContactGeomBuffer;
 import org.ode4j.ode.DGeom;
-import org.ode4j.ode.DRay;
 import org.ode4j.ode.OdeHelper;
 
 /**
@@ -92,14 +91,18 @@ final class RayCaster {
    * after them.
    */
   private void castRay(LegModel leg, double[] rays, int at) {
-    DRay ray = leg.ray;
     int rayBox = at + AtomModel.RAY_BOX;
+    double range = leg.atom.params.proximityRange();
     for (int g = 0; g < ground.geoms.size(); g++) {
-      if (ground.overlaps(g, rays, rayBox)) {
-        hit(leg, ray, ground.geoms.get(g));
+      if (!ground.overlaps(g, rays, rayBox)) {
+        continue;
+      }
+      if (g == ground.plane) {
+        leg.proximity = Math.min(leg.proximity, ground.rayOnPlane(rays, at, range));
+      } else {
+        hit(leg, leg.engineRay(), ground.geoms.get(g));
       }
     }
-    double range = leg.atom.params.proximityRange();
     double[] boxes = broadPhase.boxes();
     for (int k = 0; k < reached; k++) {
       int a = reachedAtoms[k];
@@ -125,7 +128,7 @@ final class RayCaster {
       DGeom g = parts.part(i);
       Boxes.copy(g.getAABB(), partBox, 0);
       if (Boxes.overlap(partBox, 0, rays, rayBox)) {
-        hit(leg, g, leg.ray);
+        hit(leg, g, leg.engineRay());
       }
     }
   }

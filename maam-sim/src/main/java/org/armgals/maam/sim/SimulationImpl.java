@@ -379,13 +379,25 @@ final class SimulationImpl implements Simulation {
     emptied[i] = atom.drain(dt);
   }
 
-  /** The last step's drain of atom {@code i}: the cycle's pushes on it end with its servos. */
+  /**
+   * The last step's drain of atom {@code i}: the cycle's pushes on it end with its servos. Its rays
+   * that stay in place are placed now, while the atom is at hand, not at the next sensing, which
+   * with a thousand atoms reads it from memory afresh: nothing moves an atom between the two, and
+   * what moves a leg or a kernel takes its rays out of place.
+   */
   private void drainLast(int i) {
     drain(i);
     AtomModel atom = atoms.get(i);
     atom.pushX = 0;
     atom.pushY = 0;
     atom.pushZ = 0;
+    if (!atom.failed) {
+      for (LegModel leg : atom.legs) {
+        if (!leg.rayInPlace && leg.keepsItsRay() && !leg.failed && leg.binding == null) {
+          leg.placeRay();
+        }
+      }
+    }
   }
 
   /** Atom {@code i}'s {@link #drain}, then its {@link #servo} for the next step. */
