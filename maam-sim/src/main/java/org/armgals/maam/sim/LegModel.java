@@ -228,12 +228,12 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
     rayInPlace = keepsItsRay();
   }
 
-  /** Whether the engine's ray lags where the ray was last {@link #aimRay aimed}. */
+  /** Whether the engine's ray lags where the ray was last {@link #placeRay placed}. */
   private boolean engineRayBehind;
 
   /**
-   * The engine's ray, set where the ray was last {@link #aimRay aimed} if it lags: for a collider.
-   * Only the thread that aims the leg's ray calls it.
+   * The engine's ray, set where the ray was last {@link #placeRay placed} if it lags: for a
+   * collider. Only the thread that places the leg's ray calls it.
    */
   final DRay engineRay() {
     if (engineRayBehind) {
