@@ -288,7 +288,7 @@ final class BroadPhase {
     for (AtomModel atom : atoms) {
       atom.parts.destroy();
       for (LegModel leg : atom.legs) {
-        leg.ray.destroy();
+        leg.destroyRay();
       }
     }
     ground.destroy();

@@ -23,7 +23,12 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
   final int bit;
 
   final DCapsule capsule;
-  final DRay ray;
+
+  /**
+   * The engine's proximity ray: it lags where the ray was last placed until {@link #engineRay} sets
+   * it, so it is read through that alone.
+   */
+  private final DRay ray;
 
   /** The torques the motors applied to the leg about its two axes in the last step (N·m). */
   double torque1;
@@ -244,6 +249,11 @@ abstract sealed class LegModel permits JointedLeg, KinematicLeg {
       engineRayBehind = false;
     }
     return ray;
+  }
+
+  /** Destroys the engine's ray, with the simulation. */
+  final void destroyRay() {
+    ray.destroy();
   }
 
   /**
